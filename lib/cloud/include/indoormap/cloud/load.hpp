@@ -1,0 +1,85 @@
+#pragma once
+// Point-cloud loaders: PCD (ascii / binary / binary_compressed), PLY, plain text XYZ, and 3DTK
+// scan directories. PCL is used behind this header only; callers see indoormap::PointCloud.
+//
+// Output frame: metres, right-handed, z up. 3DTK data (cm, left-handed, y up) is converted
+// automatically (X = z/100, Y = -x/100, Z = y/100); other formats use LoadOptions::unit_m and
+// LoadOptions::up_axis. Non-finite points are dropped and counted.
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "indoormap/core/cloud.hpp"
+
+namespace indoormap::cloud {
+
+/// Which input axis points up (for PCD / PLY / XYZ). kY means a right-handed y-up frame, mapped
+/// to z-up as X = x, Y = -z, Z = y.
+enum class UpAxis { kZ, kY };
+
+struct LoadOptions {
+  double unit_m = 1.0;         ///< metres per input unit for PCD / PLY / XYZ (0.01 for cm)
+  UpAxis up_axis = UpAxis::kZ;
+  int scan_first = -1;         ///< 3DTK: first scan number to read (-1: all)
+  int scan_last = -1;          ///< 3DTK: last scan number to read, inclusive (-1: all)
+  std::uint64_t max_points = 200'000'000;  ///< refuse larger inputs before allocating
+  /// Called now and then with the fraction [0, 1] of the current file read; may be empty.
+  std::function<void(const std::string& file, double fraction)> progress;
+};
+
+struct InputReport {
+  std::string path;
+  std::string format;              ///< "pcd", "ply", "xyz", "3dtk"
+  std::uint64_t points_read = 0;   ///< points in the file(s), including dropped ones
+  std::uint64_t points_dropped = 0;  ///< NaN / Inf points dropped
+  int scans = 0;                   ///< 3DTK: number of scan files read
+  bool scanner_known = false;      ///< a scanner position came from the file (pose, VIEWPOINT)
+};
+
+struct LoadResult {
+  PointCloud cloud;                ///< merged points and scanner positions
+  std::vector<InputReport> inputs;
+};
+
+/// Loads and merges every input. Throws InputError (names file and line) on bad input and
+/// BudgetError when the total point count would exceed options.max_points.
+LoadResult load_clouds(const std::vector<std::string>& paths, const LoadOptions& options = {});
+
+/// Loads one input (file or 3DTK directory).
+LoadResult load_cloud(const std::string& path, const LoadOptions& options = {});
+
+/// The parsed header of a PCD file, validated by us before PCL sees the file (Debian's PCL 1.13
+/// crashes on several malformed headers).
+struct PcdHeader {
+  std::vector<std::string> fields;
+  std::vector<int> sizes;
+  std::vector<char> types;
+  std::vector<int> counts;
+  std::uint64_t width = 0;
+  std::uint64_t height = 0;
+  std::uint64_t points = 0;
+  double viewpoint[7] = {0, 0, 0, 1, 0, 0, 0};  ///< tx ty tz qw qx qy qz
+  std::string data;             ///< "ascii", "binary", "binary_compressed"
+  std::uint64_t data_offset = 0;  ///< byte offset of the data section
+};
+
+/// Parses and validates a PCD header from the file's bytes. Throws InputError naming the file
+/// and the header line on any inconsistency (missing FIELDS, x/y/z absent, WIDTH*HEIGHT !=
+/// POINTS, POINTS above max_points, body too short for binary data, ...).
+PcdHeader read_pcd_header(const std::string& bytes, const std::string& file,
+                          std::uint64_t max_points);
+
+/// Writes points (metres, given frame) as a binary PCD with fields x y z, atomically (temporary
+/// name, then rename). viewpoint_m is written to the VIEWPOINT line.
+void write_pcd_binary(const std::string& path, const std::vector<Eigen::Vector3f>& points,
+                      const Eigen::Vector3d& viewpoint_m = Eigen::Vector3d::Zero());
+
+/// The 3DTK pose convention (EulerToMatrix4): translation in cm and Euler angles in degrees to a
+/// column-major 4x4 matrix in 3DTK's own (left-handed, y-up, cm) frame.
+std::array<double, 16> tdtk_pose_to_matrix(const double translation_cm[3],
+                                           const double euler_deg[3]);
+
+}  // namespace indoormap::cloud
