@@ -1,0 +1,67 @@
+#include "indoormap/core/atomic_file.hpp"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <system_error>
+
+#include "indoormap/core/errors.hpp"
+
+namespace indoormap {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path temp_name_for(const fs::path& path) {
+  static std::atomic<unsigned> counter{0};
+  return path.parent_path() / ("." + path.filename().string() + ".tmp." + std::to_string(::getpid()) +
+                               "." + std::to_string(counter++));
+}
+
+}  // namespace
+
+void write_stream_atomic(const fs::path& path, const std::function<void(std::ostream&)>& write) {
+  const fs::path tmp = temp_name_for(path);
+  try {
+    {
+      std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+      if (!out) throw OutputError(path.string(), std::strerror(errno));
+      write(out);
+      out.flush();
+      if (!out) throw OutputError(path.string(), "write failed (disk full?)");
+    }
+    std::error_code ec;
+    fs::rename(tmp, path, ec);
+    if (ec) throw OutputError(path.string(), ec.message());
+  } catch (...) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw;
+  }
+}
+
+void write_file_atomic(const fs::path& path, std::string_view bytes) {
+  write_stream_atomic(path, [&](std::ostream& out) {
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  });
+}
+
+void ensure_writable_dir(const fs::path& dir) {
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw OutputError(dir.string(), "exists and is not a directory");
+  fs::create_directories(dir, ec);
+  if (ec) throw OutputError(dir.string(), ec.message());
+  const fs::path probe = temp_name_for(dir / "probe");
+  {
+    std::ofstream out(probe, std::ios::binary);
+    if (!out) throw OutputError(dir.string(), std::string("directory is not writable: ") + std::strerror(errno));
+  }
+  fs::remove(probe, ec);
+}
+
+}  // namespace indoormap
