@@ -10,6 +10,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "indoormap/core/cloud.hpp"
@@ -21,10 +22,10 @@ namespace indoormap::cloud {
 enum class UpAxis { kZ, kY };
 
 struct LoadOptions {
-  double unit_m = 1.0;         ///< metres per input unit for PCD / PLY / XYZ (0.01 for cm)
+  double unit_m = 1.0;  ///< metres per input unit for PCD / PLY / XYZ (0.01 for cm)
   UpAxis up_axis = UpAxis::kZ;
-  int scan_first = -1;         ///< 3DTK: first scan number to read (-1: all)
-  int scan_last = -1;          ///< 3DTK: last scan number to read, inclusive (-1: all)
+  int scan_first = -1;                     ///< 3DTK: first scan number to read (-1: all)
+  int scan_last = -1;                      ///< 3DTK: last scan number to read, inclusive (-1: all)
   std::uint64_t max_points = 200'000'000;  ///< refuse larger inputs before allocating
   /// Called now and then with the fraction [0, 1] of the current file read; may be empty.
   std::function<void(const std::string& file, double fraction)> progress;
@@ -32,15 +33,15 @@ struct LoadOptions {
 
 struct InputReport {
   std::string path;
-  std::string format;              ///< "pcd", "ply", "xyz", "3dtk"
-  std::uint64_t points_read = 0;   ///< points in the file(s), including dropped ones
+  std::string format;                ///< "pcd", "ply", "xyz", "3dtk"
+  std::uint64_t points_read = 0;     ///< points in the file(s), including dropped ones
   std::uint64_t points_dropped = 0;  ///< NaN / Inf points dropped
-  int scans = 0;                   ///< 3DTK: number of scan files read
-  bool scanner_known = false;      ///< a scanner position came from the file (pose, VIEWPOINT)
+  int scans = 0;                     ///< 3DTK: number of scan files read
+  bool scanner_known = false;        ///< a scanner position came from the file (pose, VIEWPOINT)
 };
 
 struct LoadResult {
-  PointCloud cloud;                ///< merged points and scanner positions
+  PointCloud cloud;  ///< merged points and scanner positions
   std::vector<InputReport> inputs;
 };
 
@@ -61,15 +62,23 @@ struct PcdHeader {
   std::uint64_t width = 0;
   std::uint64_t height = 0;
   std::uint64_t points = 0;
+  bool has_viewpoint = false;                   ///< a VIEWPOINT line was present
   double viewpoint[7] = {0, 0, 0, 1, 0, 0, 0};  ///< tx ty tz qw qx qy qz
-  std::string data;             ///< "ascii", "binary", "binary_compressed"
-  std::uint64_t data_offset = 0;  ///< byte offset of the data section
+  std::string data;                             ///< "ascii", "binary", "binary_compressed"
+  std::uint64_t data_offset = 0;                ///< byte offset of the data section
+  std::uint64_t point_size = 0;                 ///< bytes per point in binary data
 };
 
 /// Parses and validates a PCD header from the file's bytes. Throws InputError naming the file
 /// and the header line on any inconsistency (missing FIELDS, x/y/z absent, WIDTH*HEIGHT !=
-/// POINTS, POINTS above max_points, body too short for binary data, ...).
+/// POINTS, POINTS == 0, data section too short for POINTS, ...), and BudgetError naming the
+/// file when POINTS exceeds max_points.
 PcdHeader read_pcd_header(const std::string& bytes, const std::string& file,
+                          std::uint64_t max_points);
+
+/// The same, from the first bytes of a file (`head`, at least the header plus 8 bytes) and the
+/// file's total size, so that large files need not be read twice.
+PcdHeader read_pcd_header(std::string_view head, std::uint64_t file_size, const std::string& file,
                           std::uint64_t max_points);
 
 /// Writes points (metres, given frame) as a binary PCD with fields x y z, atomically (temporary
