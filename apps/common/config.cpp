@@ -27,6 +27,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("level", "enabled", lv.enabled);
   f("level", "max_tilt_deg", lv.max_tilt_deg);
   f("level", "band_m", lv.band_m);
+  f("level", "peak_fraction", lv.peak_fraction);
   f("level", "inlier_m", lv.inlier_m);
   f("level", "iterations", lv.iterations);
   f("level", "sample_points", lv.sample_points);
@@ -156,6 +157,7 @@ void validate(const PipelineConfig& c) {
   const auto& lv = c.map.level;
   require(lv.max_tilt_deg > 0 && lv.max_tilt_deg < 90, "level.max_tilt_deg: must be in (0, 90)");
   require(lv.band_m > 0, "level.band_m: must be > 0");
+  require(lv.peak_fraction > 0 && lv.peak_fraction <= 1, "level.peak_fraction: must be in (0, 1]");
   require(lv.inlier_m > 0, "level.inlier_m: must be > 0");
   require(lv.iterations > 0 && lv.iterations <= 100000, "level.iterations: must be in [1, 100000]");
   require(lv.sample_points >= 3 && lv.sample_points <= 100'000'000,

@@ -65,7 +65,16 @@ int run(int argc, char** argv) {
   const std::size_t kept = loaded.cloud.points.size();
   const bool scanners_given = !loaded.cloud.scanners.empty();
 
-  layout::MapResult m = layout::make_map(std::move(loaded.cloud), cfg.map);
+  layout::MapResult m = [&] {
+    try {
+      return layout::make_map(std::move(loaded.cloud), cfg.map);
+    } catch (const InputError& e) {
+      if (!e.file().empty()) throw;
+      std::string names;  // the data as a whole is unusable: name every input
+      for (const auto& in : cli.inputs) names += (names.empty() ? "" : ", ") + in;
+      throw InputError(names, e.problem(), e.line());
+    }
+  }();
 
   // Outputs.
   t0 = std::chrono::steady_clock::now();

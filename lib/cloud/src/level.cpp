@@ -34,25 +34,27 @@ double percentile(std::vector<double> v, double pct) {
   return v[k];
 }
 
-// Share of the inliers' bounding box (0.25 m cells) that holds inliers.
+// Share of the inliers' extent (0.25 m cells, between their 2nd and 98th x / y percentiles, so a
+// few far points seen through a window do not inflate it) that holds inliers.
 double fill_ratio(const std::vector<Eigen::Vector3d>& cand, const PlaneFit& f, double inlier_m) {
   constexpr double kCell = 0.25;
-  Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
-  std::vector<Eigen::Vector2d> in;
+  std::vector<double> xs, ys;
   for (const auto& q : cand)
     if (std::abs(f.normal.dot(q) - f.offset_m) <= inlier_m) {
-      in.emplace_back(q.x(), q.y());
-      lo = lo.cwiseMin(in.back());
-      hi = hi.cwiseMax(in.back());
+      xs.push_back(q.x());
+      ys.push_back(q.y());
     }
-  if (in.empty()) return 0.0;
-  const auto w = static_cast<std::size_t>((hi.x() - lo.x()) / kCell) + 1;
-  const auto h = static_cast<std::size_t>((hi.y() - lo.y()) / kCell) + 1;
+  if (xs.size() < 3) return 0.0;
+  const double x0 = percentile(xs, 2.0), x1 = percentile(xs, 98.0);
+  const double y0 = percentile(ys, 2.0), y1 = percentile(ys, 98.0);
+  const auto w = static_cast<std::size_t>((x1 - x0) / kCell) + 1;
+  const auto h = static_cast<std::size_t>((y1 - y0) / kCell) + 1;
   if (w * h > 4'000'000) return 1.0;  // far beyond any room: do not judge
   std::vector<std::uint8_t> occ(w * h, 0);
-  for (const auto& q : in)
-    occ[static_cast<std::size_t>((q.y() - lo.y()) / kCell) * w +
-        static_cast<std::size_t>((q.x() - lo.x()) / kCell)] = 1;
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    if (xs[i] < x0 || xs[i] > x1 || ys[i] < y0 || ys[i] > y1) continue;
+    occ[static_cast<std::size_t>((ys[i] - y0) / kCell) * w + static_cast<std::size_t>((xs[i] - x0) / kCell)] = 1;
+  }
   std::size_t n = 0;
   for (auto v : occ) n += v;
   return static_cast<double>(n) / static_cast<double>(w * h);
@@ -66,6 +68,10 @@ PlaneFit fit_horizontal_plane(const std::vector<Eigen::Vector3d>& cand, const Le
   if (cand.size() < 3) return best;
   const double cos_max = std::cos(deg2rad(p.max_tilt_deg));
   std::uniform_int_distribution<std::size_t> pick(0, cand.size() - 1);
+  // Hypotheses are scored on an evenly strided subset; the winner is refined on all candidates.
+  std::vector<Eigen::Vector3d> score_set;
+  const std::size_t stride = std::max<std::size_t>(1, cand.size() / 20000);
+  for (std::size_t i = 0; i < cand.size(); i += stride) score_set.push_back(cand[i]);
   std::size_t best_count = 0;
   Eigen::Vector3d best_n = Eigen::Vector3d::UnitZ();
   double best_d = 0.0;
@@ -81,13 +87,14 @@ PlaneFit fit_horizontal_plane(const std::vector<Eigen::Vector3d>& cand, const Le
     if (n.z() < cos_max) continue;
     const double d = n.dot(a);
     std::size_t count = 0;
-    for (const auto& q : cand) count += std::abs(n.dot(q) - d) <= p.inlier_m;
+    for (const auto& q : score_set) count += std::abs(n.dot(q) - d) <= p.inlier_m;
     if (count > best_count) {
       best_count = count;
       best_n = n;
       best_d = d;
     }
   }
+  best_count *= stride;
   if (best_count < std::max<std::size_t>(3, p.min_inliers)) return best;
 
   Eigen::Vector3d n = best_n;
@@ -150,24 +157,35 @@ LevelResult estimate_level(const std::vector<Eigen::Vector3f>& points, const Lev
     r.note = "too few points to level";
     return r;
   }
+  // Floor and ceiling heights from a 0.1 m height histogram: the lowest and the highest bins
+  // holding peak_fraction of the fullest bin. Percentiles would not do: points seen through
+  // windows can lie metres above the ceiling and be more than 1 % of the cloud.
   std::vector<double> zs;
   zs.reserve(sample.size());
   for (const auto& q : sample) zs.push_back(q.z());
-  const double z_lo = percentile(zs, params.low_percentile);
-  const double z_hi = percentile(zs, params.high_percentile);
+  const double h_lo = percentile(zs, 0.1), h_hi = percentile(zs, 99.9);
+  const std::size_t bins = std::clamp<std::size_t>(
+      static_cast<std::size_t>(std::ceil((h_hi - h_lo) / 0.1)) + 1, 1, 10000);
+  const double bin_m = std::max(0.1, (h_hi - h_lo) / static_cast<double>(bins));
+  std::vector<std::size_t> hist(bins, 0);
+  for (double z : zs)
+    if (z >= h_lo && z <= h_hi)
+      ++hist[std::min(bins - 1, static_cast<std::size_t>((z - h_lo) / bin_m))];
+  const std::size_t peak = *std::max_element(hist.begin(), hist.end());
+  std::size_t first = 0, last = bins - 1;
+  while (first < bins - 1 && hist[first] < params.peak_fraction * peak) ++first;
+  while (last > first && hist[last] < params.peak_fraction * peak) --last;
+  const double z_floor = h_lo + (first + 0.5) * bin_m, z_ceiling = h_lo + (last + 0.5) * bin_m;
 
-  // The bands reach a little beyond the percentiles: with a tilt the plane spans a height range
-  // around them.
   std::vector<Eigen::Vector3d> low, high;
-  const double reach = 0.5 * params.band_m;
   for (const auto& q : sample) {
-    if (q.z() >= z_lo - reach && q.z() <= z_lo + params.band_m) low.push_back(q);
-    if (q.z() <= z_hi + reach && q.z() >= z_hi - params.band_m) high.push_back(q);
+    if (q.z() >= z_floor - 0.5 * params.band_m && q.z() <= z_floor + params.band_m) low.push_back(q);
+    if (q.z() <= z_ceiling + 0.5 * params.band_m && q.z() >= z_ceiling - params.band_m) high.push_back(q);
   }
   std::mt19937_64 rng(params.seed);
   r.floor = fit_horizontal_plane(low, params, rng);
   // A ceiling must lie well above the floor; with a flat cloud both bands are the same points.
-  if (z_hi - z_lo > 2.0 * params.band_m) r.ceiling = fit_horizontal_plane(high, params, rng);
+  if (z_ceiling - z_floor > 2.0 * params.band_m) r.ceiling = fit_horizontal_plane(high, params, rng);
 
   Eigen::Vector3d up;
   if (r.floor.found && r.ceiling.found) {

@@ -86,7 +86,13 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls, const Grid<std::uint8
     r.warnings.push_back("empty grid: no layout");
     return r;
   }
-  r.passage = passage_area(walls);
+  // The passes run over the obstacles of both bands. The paper uses the wall band alone, but one
+  // gap in it (a window or a glass transom high up in a wall, as in the Jacobs lab) then opens
+  // every row or column through the gap, and the whole strip falls outside the room. The lower
+  // part of the same wall closes the gap in the furniture band.
+  Grid<std::uint8_t> obstacles(w, h, 0);
+  for (std::size_t i = 0; i < obstacles.size(); ++i) obstacles.data[i] = walls.data[i] | furniture.data[i];
+  r.passage = passage_area(obstacles);
 
   Grid<std::uint8_t> passable(w, h, 0);
   for (std::size_t i = 0; i < passable.size(); ++i)
@@ -186,6 +192,25 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls, const Grid<std::uint8
       for (int col = 0; col < w; ++col)
         if (closed.at<std::uint8_t>(row, col) && r.passage.at(col, row) && !walls.at(col, row))
           furn.at(col, row) = 1;
+  }
+
+  // Furniture stands in the room: an object (8-connected) that touches no free cell lies outside
+  // it (seen through a window or the door) and stays unknown. Without free space, keep everything.
+  if (std::any_of(free_mask.data.begin(), free_mask.data.end(), [](auto v) { return v != 0; })) {
+    cv::Mat obj_labels;
+    const int n_obj = cv::connectedComponents(as_mat(furn), obj_labels, 8, CV_32S);
+    std::vector<std::uint8_t> keep(static_cast<std::size_t>(n_obj), 0);
+    for (int row = 0; row < h; ++row)
+      for (int col = 0; col < w; ++col) {
+        const int lab = obj_labels.at<int>(row, col);
+        if (lab == 0 || keep[lab]) continue;
+        for (int k = 0; k < 4; ++k)
+          if (free_mask.contains(col + kDx4[k], row + kDy4[k]) && free_mask.at(col + kDx4[k], row + kDy4[k]))
+            keep[lab] = 1;
+      }
+    for (int row = 0; row < h; ++row)
+      for (int col = 0; col < w; ++col)
+        if (!keep[obj_labels.at<int>(row, col)]) furn.at(col, row) = 0;
   }
 
   for (std::size_t i = 0; i < r.layout.size(); ++i) {

@@ -14,16 +14,16 @@ namespace indoormap::cloud {
 struct LevelParams {
   bool enabled = true;
   double max_tilt_deg = 10.0;      ///< planes tilted more than this are not floor / ceiling
-  double band_m = 0.6;             ///< search band above the low / below the high height percentile
+  double band_m = 0.6;             ///< search band around the floor / ceiling histogram peak
+  double peak_fraction = 0.2;      ///< floor / ceiling: lowest / highest 0.1 m height bin with this
+                                   ///< share of the fullest bin
   double inlier_m = 0.03;          ///< RANSAC inlier distance
-  int iterations = 300;            ///< RANSAC iterations per plane
+  int iterations = 1000;           ///< RANSAC iterations per plane
   std::size_t sample_points = 200000;  ///< points used for the fit (evenly strided)
-  double low_percentile = 0.5;     ///< [%] robust low height, start of the floor band
-  double high_percentile = 99.5;   ///< [%] robust high height, end of the ceiling band
   std::size_t min_inliers = 200;   ///< fewer inliers: plane not found
   /// The inliers must cover this share of their bounding box (on a 0.25 m grid): a floor or a
   /// ceiling is an area, the top edges of the walls of a ceiling-less scan are only a ring.
-  double min_fill = 0.3;
+  double min_fill = 0.1;
   double max_normal_disagreement_deg = 2.0;  ///< floor/ceiling normals further apart: floor only
   std::uint64_t seed = 1;
 };

@@ -26,9 +26,11 @@ class InputError : public Error {
   InputError(const std::string& file, const std::string& problem, std::size_t line = 0);
   const std::string& file() const { return file_; }
   std::size_t line() const { return line_; }
+  const std::string& problem() const { return problem_; }
 
  private:
   std::string file_;
+  std::string problem_;
   std::size_t line_;
 };
 

@@ -1,0 +1,142 @@
+// pcd-to-map stages: loading, levelling, voxelisation + layer split (against pcl::VoxelGrid on the
+// same points, in the same run), and the 2D stages, on the Jacobs scan and a 10 M-point cloud.
+// Results and how to read them: docs/benchmarks.md.
+#include <benchmark/benchmark.h>
+#include <pcl/filters/voxel_grid.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <filesystem>
+#include <memory>
+
+#include "indoormap/cloud/level.hpp"
+#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud/voxel.hpp"
+#include "indoormap/layout/pipeline.hpp"
+#include "synthetic.hpp"
+
+using namespace indoormap;
+
+namespace {
+
+std::filesystem::path jacobs_dir() {
+  if (const char* env = std::getenv("INDOORMAP_DATA"))
+    return std::filesystem::path(env) / "jacobs-thermocolorlab";
+  return std::filesystem::path(INDOORMAP_SOURCE_DIR) / ".." / "shared" / "data" / "jacobs-thermocolorlab";
+}
+
+// The inputs, levelled once (voxelisation benchmarks start from a levelled cloud).
+struct Inputs {
+  std::vector<Eigen::Vector3f> big;     // 10 M synthetic points
+  std::vector<Eigen::Vector3f> jacobs;  // empty when the data is absent
+  std::vector<Eigen::Vector3f> jacobs_raw;
+  std::vector<Eigen::Vector3d> jacobs_scanners;
+};
+
+const Inputs& inputs() {
+  static const Inputs in = [] {
+    Inputs r;
+    r.big = bench::synthetic_building(10'000'000);
+    PointCloud c{r.big, {}};
+    cloud::rotate(c, cloud::estimate_level(c.points, {}).map_from_input);
+    r.big = std::move(c.points);
+    if (std::filesystem::exists(jacobs_dir())) {
+      auto loaded = cloud::load_cloud(jacobs_dir().string());
+      r.jacobs_raw = loaded.cloud.points;
+      auto lv = cloud::estimate_level(loaded.cloud.points, {});
+      cloud::rotate(loaded.cloud, lv.map_from_input);
+      r.jacobs = std::move(loaded.cloud.points);
+      r.jacobs_scanners = loaded.cloud.scanners;
+    }
+    return r;
+  }();
+  return in;
+}
+
+const std::vector<Eigen::Vector3f>& pick(int which) {
+  return which == 0 ? inputs().big : inputs().jacobs;
+}
+
+bool skip_if_empty(benchmark::State& st, const std::vector<Eigen::Vector3f>& pts) {
+  if (!pts.empty()) return false;
+  st.SkipWithError("Jacobs data not found (../shared/data or $INDOORMAP_DATA)");
+  return true;
+}
+
+void BM_LoadJacobs(benchmark::State& st) {
+  if (!std::filesystem::exists(jacobs_dir())) return (void)st.SkipWithError("Jacobs data not found");
+  std::size_t n = 0;
+  for (auto _ : st) {
+    auto r = cloud::load_cloud(jacobs_dir().string());
+    n = r.cloud.points.size();
+    benchmark::DoNotOptimize(r.cloud.points.data());
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * n));
+}
+
+void BM_Level(benchmark::State& st) {
+  const auto& pts = st.range(0) == 0 ? inputs().big : inputs().jacobs_raw;
+  if (skip_if_empty(st, pts)) return;
+  for (auto _ : st) benchmark::DoNotOptimize(cloud::estimate_level(pts, {}));
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * pts.size()));
+}
+
+// Ours: robust bounds + voxel counts + layer analysis + both band projections.
+void BM_VoxelizeAndLayers(benchmark::State& st) {
+  const auto& pts = pick(static_cast<int>(st.range(0)));
+  if (skip_if_empty(st, pts)) return;
+  cloud::VoxelParams vp;
+  for (auto _ : st) {
+    auto g = cloud::voxelize(pts, cloud::robust_bounds(pts, vp), vp);
+    auto a = cloud::analyse_layers(g, {});
+    auto mw = cloud::project_band(g, a.wall_band, 1);
+    auto mf = cloud::project_band(g, a.furniture_band, 1);
+    benchmark::DoNotOptimize(mw.data.data());
+    benchmark::DoNotOptimize(mf.data.data());
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * pts.size()));
+}
+
+// Reference: pcl::VoxelGrid with the same leaf size on the same points (conversion excluded).
+void BM_PclVoxelGrid(benchmark::State& st) {
+  const auto& pts = pick(static_cast<int>(st.range(0)));
+  if (skip_if_empty(st, pts)) return;
+  auto cloud = std::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  cloud->reserve(pts.size());
+  for (const auto& p : pts) cloud->push_back(pcl::PointXYZ(p.x(), p.y(), p.z()));
+  pcl::VoxelGrid<pcl::PointXYZ> vg;
+  vg.setLeafSize(0.05f, 0.05f, 0.05f);
+  vg.setInputCloud(cloud);
+  for (auto _ : st) {
+    pcl::PointCloud<pcl::PointXYZ> out;
+    vg.filter(out);
+    benchmark::DoNotOptimize(out.data());
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * pts.size()));
+}
+
+// The 2D stages (passage area, seeds, flood fill, furniture, closing) on the real room grid.
+void BM_Layout2D(benchmark::State& st) {
+  const auto& pts = pick(static_cast<int>(st.range(0)));
+  if (skip_if_empty(st, pts)) return;
+  cloud::VoxelParams vp;
+  auto g = cloud::voxelize(pts, cloud::robust_bounds(pts, vp), vp);
+  auto a = cloud::analyse_layers(g, {});
+  auto mw = cloud::project_band(g, a.wall_band, 1);
+  auto mf = cloud::project_band(g, a.furniture_band, 1);
+  std::vector<Eigen::Vector2d> seeds;
+  if (st.range(0) == 1)
+    for (const auto& s : inputs().jacobs_scanners) seeds.emplace_back(s.x(), s.y());
+  for (auto _ : st) benchmark::DoNotOptimize(layout::build_layout(mw, mf, g.geometry2d(), seeds));
+  st.counters["cells"] = static_cast<double>(mw.size());
+}
+
+}  // namespace
+
+// Arg 0: the 10 M-point synthetic building; arg 1: the Jacobs scan (516 k points).
+BENCHMARK(BM_LoadJacobs)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Level)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_VoxelizeAndLayers)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PclVoxelGrid)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Layout2D)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_MAIN();

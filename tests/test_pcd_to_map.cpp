@@ -1,0 +1,229 @@
+// pcd-to-map as a user runs it: outputs and their formats, config handling, and every kind of bad
+// input with its message, exit code and the promise of no partial output.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "config.hpp"
+#include "indoormap/core/errors.hpp"
+#include "indoormap/io/map_io.hpp"
+#include "test_support.hpp"
+
+using namespace indoormap;
+namespace fs = std::filesystem;
+using test::run_app;
+
+namespace {
+
+// A furnished box room (6 x 5 x 2.7 m) sampled every 3 cm, as XYZ text, with a desk and a cabinet.
+std::string room_xyz() {
+  std::mt19937 rng(3);
+  std::normal_distribution<double> n(0.0, 0.003);
+  std::ostringstream s;
+  s.precision(4);
+  s << std::fixed << "# synthetic test room\n";
+  auto put = [&](double x, double y, double z) { s << x + n(rng) << " " << y + n(rng) << " " << z + n(rng) << "\n"; };
+  const double w = 6, d = 5, h = 2.7, st = 0.03;
+  for (double x = 0; x <= w; x += st)
+    for (double y = 0; y <= d; y += st) {
+      put(x, y, 0);
+      put(x, y, h);
+    }
+  for (double z = 0; z <= h; z += st) {
+    for (double x = 0; x <= w; x += st) {
+      put(x, 0, z);
+      put(x, d, z);
+    }
+    for (double y = 0; y <= d; y += st) {
+      put(0, y, z);
+      put(w, y, z);
+    }
+  }
+  for (double x = 0.2; x <= 1.8; x += st)  // desk top against the south wall
+    for (double y = 0.1; y <= 0.9; y += st) put(x, y, 0.75);
+  for (double y = 2.0; y <= 3.5; y += st)  // cabinet front against the east wall
+    for (double z = 0; z <= 1.9; z += st) put(5.5, y, z);
+  return s.str();
+}
+
+fs::path room_file() {
+  static const fs::path p = [] {
+    auto dir = fs::temp_directory_path() / "indoormap-tests" / "shared";
+    fs::create_directories(dir);
+    auto f = dir / "room.xyz";
+    test::write_text(f, room_xyz());
+    return f;
+  }();
+  return p;
+}
+
+bool empty_or_missing(const fs::path& dir) { return !fs::exists(dir) || fs::is_empty(dir); }
+
+}  // namespace
+
+TEST(PcdToMap, WritesEveryOutputInItsFormat) {
+  const auto out = test::scratch_dir() / "out";
+  auto r = run_app("pcd-to-map", room_file().string() + " --scanner 3,2.5,1.2 -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* f : {"map.pgm", "map.yaml", "layout.pgm", "layout.png", "summary.json"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  // No temporary files are left behind.
+  for (const auto& e : fs::directory_iterator(out)) EXPECT_NE(e.path().filename().string()[0], '.');
+
+  // The ROS map loads the way map_server reads it, and agrees with the layout classes.
+  io::RosMap ros = io::read_ros_map(out / "map.yaml");
+  const std::string pgm = test::read_text(out / "layout.pgm");
+  ASSERT_EQ(pgm.substr(0, 3), "P5\n");
+  const int w = ros.geometry.width(), h = ros.geometry.height();
+  const std::string header = "P5\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
+  ASSERT_EQ(pgm.substr(0, header.size()), header);
+  ASSERT_EQ(pgm.size(), header.size() + static_cast<std::size_t>(w) * h);
+  int free_cells = 0;
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) {
+      const auto raw = static_cast<Cell>(pgm[header.size() + static_cast<std::size_t>(h - 1 - r) * w + c]);
+      const Cell ros_cell = ros.cells.at(c, r);
+      const Cell expected = raw == Cell::kFurniture ? Cell::kWall : raw;
+      EXPECT_EQ(ros_cell, expected);
+      free_cells += raw == Cell::kFree;
+    }
+  EXPECT_NEAR(ros.meta.resolution_m, 0.05, 1e-12);
+  // The scanner cell (3, 2.5) is free, in map metres through the YAML origin.
+  EXPECT_EQ(ros.cells.at(ros.geometry.cell_of({3.0, 2.5})), Cell::kFree);
+  EXPECT_GT(free_cells * 0.0025, 15.0);
+
+  auto s = nlohmann::json::parse(test::read_text(out / "summary.json"));
+  EXPECT_EQ(s["program"], "pcd-to-map");
+  EXPECT_EQ(s["points"]["dropped_nonfinite"], 0);
+  EXPECT_NEAR(s["floor_z_m"].get<double>(), 0.0, 0.05);
+  EXPECT_NEAR(s["ceiling_z_m"].get<double>(), 2.7, 0.05);
+  EXPECT_TRUE(s["ceiling_found"].get<bool>());
+  for (const char* k : {"inputs", "levelling", "grid", "wall_band", "furniture_band", "layers",
+                        "scanners_map_m", "timings_ms", "parameters", "version"})
+    EXPECT_TRUE(s.contains(k)) << k;
+  EXPECT_EQ(s["scanner_source"], "config");
+  EXPECT_GT(s["layout_cells"]["furniture"].get<int>(), 0);
+}
+
+TEST(PcdToMap, HelpAndPrintConfig) {
+  auto r = run_app("pcd-to-map", "--help");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("Examples"), std::string::npos);
+  r = run_app("pcd-to-map", "--print-config --cell-m 0.1");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("cell_m: 0.1"), std::string::npos);
+  // The printed config reads back to the same parameters.
+  const auto dir = test::scratch_dir();
+  test::write_text(dir / "printed.yaml", r.out);
+  app::PipelineConfig c;
+  app::merge_config_file(c, (dir / "printed.yaml").string());
+  EXPECT_DOUBLE_EQ(c.map.voxel.cell_m, 0.1);
+}
+
+TEST(PcdToMap, DocumentedDefaultsAreTheCodeDefaults) {
+  app::PipelineConfig from_file;
+  app::merge_config_file(from_file, std::string(INDOORMAP_SOURCE_DIR) + "/config/default.yaml");
+  EXPECT_EQ(app::to_yaml(from_file), app::to_yaml(app::PipelineConfig{}));
+}
+
+TEST(PcdToMap, ConfigErrorsNameFileKeyAndLine) {
+  const auto dir = test::scratch_dir();
+  test::write_text(dir / "typo.yaml", "voxel:\n  cel_m: 0.1\n");
+  auto r = run_app("pcd-to-map", room_file().string() + " -c " + (dir / "typo.yaml").string() + " -o " + (dir / "o").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("typo.yaml:2"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("voxel.cel_m"), std::string::npos) << r.err;
+  test::write_text(dir / "type.yaml", "level:\n  max_tilt_deg: steep\n");
+  r = run_app("pcd-to-map", room_file().string() + " -c " + (dir / "type.yaml").string() + " -o " + (dir / "o").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("level.max_tilt_deg"), std::string::npos) << r.err;
+  r = run_app("pcd-to-map", room_file().string() + " --cell-m -1 -o " + (dir / "o").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("voxel.cell_m"), std::string::npos) << r.err;
+  r = run_app("pcd-to-map", room_file().string() + " --bogus -o " + (dir / "o").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(empty_or_missing(dir / "o"));
+}
+
+struct BadInput {
+  std::string name;
+  std::string file_name;
+  std::string content;
+  std::string expect;  ///< substring of the message
+  std::string extra_args;
+};
+
+void PrintTo(const BadInput& b, std::ostream* os) { *os << b.name; }
+
+class PcdToMapBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(PcdToMapBadInput, ClearMessageExitTwoNoOutput) {
+  const auto& p = GetParam();
+  const auto dir = test::scratch_dir();
+  const auto in = dir / p.file_name;
+  if (p.content != "<missing>") test::write_text(in, p.content);
+  const auto out = dir / "out";
+  auto r = run_app("pcd-to-map", in.string() + " -o " + out.string() + " " + p.extra_args);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(p.expect), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(p.file_name), std::string::npos) << "message must name the file: " << r.err;
+  EXPECT_TRUE(empty_or_missing(out)) << "partial output left in " << out;
+}
+
+namespace {
+std::string flat_cloud() {
+  std::string s;
+  for (int i = 0; i < 50; ++i)
+    for (int j = 0; j < 50; ++j) s += std::to_string(i * 0.05) + " " + std::to_string(j * 0.05) + " 1.0\n";
+  return s;
+}
+}  // namespace
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, PcdToMapBadInput,
+    ::testing::Values(
+        BadInput{"missing", "nothere.pcd", "<missing>", "", ""},
+        BadInput{"empty_xyz", "empty.xyz", "", "", ""},
+        BadInput{"malformed_line", "bad.xyz", "1 2 3\n4 5 6\n7 eight 9\n", "bad.xyz:3", ""},
+        BadInput{"empty_pcd", "empty.pcd", "", "", ""},
+        BadInput{"pcd_without_fields", "nofields.pcd",
+                 "VERSION 0.7\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n1 2 3\n",
+                 "FIELDS", ""},
+        BadInput{"pcd_huge_dims", "huge.pcd",
+                 "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 65536\nHEIGHT 65536\n"
+                 "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 0\nDATA binary\n",
+                 "", ""},
+        BadInput{"pcd_huge_points", "short.pcd",
+                 "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 4000000000\nHEIGHT 1\n"
+                 "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4000000000\nDATA binary\nabc",
+                 "", ""},
+        BadInput{"all_nan", "nan.xyz", "nan nan nan\nnan 1 2\ninf 0 0\n", "", ""},
+        BadInput{"one_height", "flat.xyz", flat_cloud(), "one height", ""},
+        BadInput{"unknown_extension", "cloud.las", "1 2 3\n", "", ""}),
+    [](const auto& info) { return info.param.name; });
+
+TEST(PcdToMap, GridAboveBudgetIsRefusedBeforeAllocating) {
+  const auto dir = test::scratch_dir();
+  test::write_text(dir / "small.yaml", "voxel:\n  max_cells: 1000\n");
+  auto r = run_app("pcd-to-map", room_file().string() + " -c " + (dir / "small.yaml").string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("max_cells"), std::string::npos) << r.err;
+  EXPECT_TRUE(empty_or_missing(dir / "out"));
+}
+
+TEST(PcdToMap, UnwritableOutputDirectory) {
+  const auto dir = test::scratch_dir();
+  test::write_text(dir / "a_file", "x");
+  auto r = run_app("pcd-to-map", room_file().string() + " -o " + (dir / "a_file" / "out").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("a_file"), std::string::npos) << r.err;
+  r = run_app("pcd-to-map", room_file().string() + " -o " + (dir / "a_file").string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("not a directory"), std::string::npos) << r.err;
+  EXPECT_EQ(test::read_text(dir / "a_file"), "x");  // not clobbered
+}
+
+TEST(PcdToMap, NoInputOrNoOutputIsUsageError) {
+  EXPECT_EQ(run_app("pcd-to-map", "-o /tmp/x").exit_code, 2);
+  EXPECT_EQ(run_app("pcd-to-map", room_file().string()).exit_code, 2);
+}

@@ -1,0 +1,133 @@
+// The whole pre-processing pipeline (paper 3.2.A) on the real Jacobs scan, position 0, all nine
+// sectors read straight from the 3DTK files. Skips when ../shared/data is absent.
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include "indoormap/cloud/load.hpp"
+#include "indoormap/layout/pipeline.hpp"
+#include "test_support.hpp"
+
+using namespace indoormap;
+
+namespace {
+
+struct Jacobs {
+  cloud::LoadResult loaded;
+  layout::MapResult map;
+};
+
+// Loaded and mapped once for the whole suite.
+const Jacobs* jacobs() {
+  static const Jacobs* j = [] () -> const Jacobs* {
+    auto root = test::shared_data_dir();
+    if (!root || !std::filesystem::exists(*root / "jacobs-thermocolorlab")) return nullptr;
+    auto* r = new Jacobs;
+    r->loaded = cloud::load_cloud((*root / "jacobs-thermocolorlab").string());
+    r->map = layout::make_map(r->loaded.cloud, {});
+    return r;
+  }();
+  return j;
+}
+
+#define REQUIRE_JACOBS()                                                                   \
+  const Jacobs* J = jacobs();                                                              \
+  if (!J) GTEST_SKIP() << "real data 'jacobs-thermocolorlab' not found: set INDOORMAP_DATA " \
+                          "or provide ../shared/data next to the source tree"
+
+// Number of layers within +-5 of `layer` holding at least half of that layer's occupied cells.
+int smear(const std::vector<std::int64_t>& h, std::int64_t layer) {
+  int n = 0;
+  for (std::int64_t z = std::max<std::int64_t>(0, layer - 5);
+       z <= std::min<std::int64_t>(static_cast<std::int64_t>(h.size()) - 1, layer + 5); ++z)
+    n += 2 * h[z] >= h[layer];
+  return n;
+}
+
+}  // namespace
+
+TEST(JacobsPipeline, AllNineSectorsLoadWithTheScannerPose) {
+  REQUIRE_JACOBS();
+  EXPECT_EQ(J->loaded.cloud.points.size(), 516110u);
+  ASSERT_FALSE(J->loaded.cloud.scanners.empty());
+}
+
+TEST(JacobsPipeline, LevellingPutsFloorAndCeilingIntoOneOrTwoLayers) {
+  REQUIRE_JACOBS();
+  const auto& m = J->map;
+  ASSERT_TRUE(m.level.levelled) << m.level.note;
+  // Floor and ceiling planes agree on a tilt of 2.1 degrees (1.6 about one horizontal axis and
+  // 1.4 about the other); the floor smears over five layers without levelling.
+  EXPECT_GT(m.level.tilt_deg, 1.0);
+  EXPECT_LT(m.level.tilt_deg, 3.0);
+  ASSERT_TRUE(m.level.floor.found);
+  ASSERT_TRUE(m.level.ceiling.found);
+  ASSERT_TRUE(m.layers.ceiling_found);
+  EXPECT_LE(smear(m.layers.occupied_per_layer, m.layers.floor_layer), 2);
+  EXPECT_LE(smear(m.layers.occupied_per_layer, m.layers.ceiling_layer), 2);
+  const double height = m.layers.ceiling_z_m - m.layers.floor_z_m;
+  EXPECT_GT(height, 2.5);  // an office: about 2.8 - 3.0 m
+  EXPECT_LT(height, 3.3);
+}
+
+TEST(JacobsPipeline, WithoutLevellingTheFloorSmears) {
+  REQUIRE_JACOBS();
+  layout::MapParams p;
+  p.level.enabled = false;
+  auto m = layout::make_map(J->loaded.cloud, p);
+  EXPECT_GE(smear(m.layers.occupied_per_layer, m.layers.floor_layer), 3);
+}
+
+TEST(JacobsPipeline, FreeSpaceIsOneRegionAroundTheScannerEnclosedByWall) {
+  REQUIRE_JACOBS();
+  const auto& m = J->map;
+  const auto& L = m.layout.layout;
+  ASSERT_FALSE(m.layout.seeds_estimated);
+  ASSERT_EQ(m.layout.seeds.size(), 1u);
+  // The seed is the scanner's own cell (it stands in free space).
+  const auto& s = m.cloud_map.scanners.front();
+  EXPECT_EQ(m.layout.seeds[0], m.geometry.cell_of({s.x(), s.y()}));
+
+  cv::Mat free_mask(L.height, L.width, CV_8U, cv::Scalar(0));
+  for (int r = 0; r < L.height; ++r)
+    for (int c = 0; c < L.width; ++c) free_mask.at<std::uint8_t>(r, c) = L.at(c, r) == Cell::kFree;
+  cv::Mat labels;
+  EXPECT_EQ(cv::connectedComponents(free_mask, labels, 4, CV_32S), 2);  // background + one region
+  const double cell_area = m.geometry.cell_m() * m.geometry.cell_m();
+  EXPECT_GT(m.layout.cells_free * cell_area, 12.0);  // room of about 8.5 m x 6 m, crowded
+  EXPECT_LT(m.layout.cells_free * cell_area, 51.0);
+
+  // Enclosed: no free cell touches unknown space or the grid edge.
+  for (int r = 0; r < L.height; ++r)
+    for (int c = 0; c < L.width; ++c) {
+      if (L.at(c, r) != Cell::kFree) continue;
+      for (auto [dc, dr] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+        ASSERT_TRUE(L.contains(c + dc, r + dr));
+        ASSERT_NE(L.at(c + dc, r + dr), Cell::kUnknown) << "free cell " << c << "," << r;
+      }
+    }
+}
+
+TEST(JacobsPipeline, FurnitureStandsAlongTheWalls) {
+  REQUIRE_JACOBS();
+  const auto& m = J->map;
+  const auto& L = m.layout.layout;
+  const double cell_area = m.geometry.cell_m() * m.geometry.cell_m();
+  EXPECT_GT(m.layout.cells_furniture * cell_area, 3.0);  // desks and cabinets
+  // Most furniture lies within 1 m of a wall cell.
+  cv::Mat not_wall(L.height, L.width, CV_8U, cv::Scalar(1));
+  for (int r = 0; r < L.height; ++r)
+    for (int c = 0; c < L.width; ++c)
+      if (L.at(c, r) == Cell::kWall) not_wall.at<std::uint8_t>(r, c) = 0;
+  cv::Mat dist;
+  cv::distanceTransform(not_wall, dist, cv::DIST_L2, cv::DIST_MASK_5);
+  std::int64_t near = 0, all = 0;
+  for (int r = 0; r < L.height; ++r)
+    for (int c = 0; c < L.width; ++c)
+      if (L.at(c, r) == Cell::kFurniture) {
+        ++all;
+        near += dist.at<float>(r, c) * m.geometry.cell_m() <= 1.0;
+      }
+  ASSERT_GT(all, 0);
+  EXPECT_GT(static_cast<double>(near) / all, 0.7);
+}
