@@ -18,20 +18,24 @@ using nlohmann::json;
 LayoutScores evaluate_layout(const GridGeometry& tg, const Grid<Cell>& truth, const GridGeometry& rg,
                              const Grid<Cell>& result) {
   LayoutScores s;
-  const double ra = rg.cell_m() * rg.cell_m(), ta = tg.cell_m() * tg.cell_m();
+  // Count cells first, convert to m^2 once: exact for equal resolutions.
+  std::array<std::array<std::int64_t, 4>, 4> by_result{}, by_truth{};
   for (int r = 0; r < result.height; ++r) {
     for (int c = 0; c < result.width; ++c) {
       const CellIndex ti = tg.cell_of(rg.center_of({c, r}));
       const Cell t = tg.contains(ti) ? truth.at(ti) : Cell::kUnknown;
-      s.confusion_m2[static_cast<int>(t)][static_cast<int>(result.at(c, r))] += ra;
+      ++by_result[static_cast<int>(t)][static_cast<int>(result.at(c, r))];
     }
   }
   for (int r = 0; r < truth.height; ++r) {
     for (int c = 0; c < truth.width; ++c) {
       if (rg.contains(rg.cell_of(tg.center_of({c, r})))) continue;
-      s.confusion_m2[static_cast<int>(truth.at(c, r))][0] += ta;
+      ++by_truth[static_cast<int>(truth.at(c, r))][0];
     }
   }
+  const double ra = rg.cell_m() * rg.cell_m(), ta = tg.cell_m() * tg.cell_m();
+  for (int t = 0; t < 4; ++t)
+    for (int r = 0; r < 4; ++r) s.confusion_m2[t][r] = by_result[t][r] * ra + by_truth[t][r] * ta;
   double agree = 0.0, known = 0.0, iou_sum = 0.0;
   int iou_n = 0;
   for (int k = 0; k < 4; ++k) {

@@ -162,6 +162,7 @@ std::vector<std::string> write_3dtk(const fs::path& dir, const SimResult& sim) {
 
 WrittenOutputs write_scene_outputs(const fs::path& dir, const Scene& input, const SimResult& sim,
                                    const OutputOptions& options) {
+  ensure_writable_dir(dir);
   const Scene scene = normalised(input);
   const SceneGeometry geometry = build_geometry(scene);
   WrittenOutputs out;

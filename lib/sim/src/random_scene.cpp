@@ -82,14 +82,13 @@ LocalRoom make_room(Rng& rng, const RandomSceneParams& p, int index, double x0, 
   }
   const bool l_shape = w >= 4.5 && d >= 4.0 && rng.uniform() < p.l_shape_probability;
   int north_edge = 2;
-  double north_len = w, north_start = x0 + w;
+  double north_len = w;
   if (l_shape) {
     const double cx = rng.uniform(0.3, 0.45) * w, cy = rng.uniform(0.3, 0.45) * d;
     room.polygon = {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + d - cy}, {x0 + w - cx, y0 + d - cy},
                     {x0 + w - cx, y0 + d}, {x0, y0 + d}};
     north_edge = 4;
     north_len = w - cx;
-    north_start = x0 + w - cx;
   } else {
     room.polygon = {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + d}, {x0, y0 + d}};
   }
@@ -105,18 +104,17 @@ LocalRoom make_room(Rng& rng, const RandomSceneParams& p, int index, double x0, 
   const int nwin = rng.uniform_int(0, 2);
   const double lowest = room.ceiling.height_m;
   for (int k = 0; k < nwin; ++k) {
+    // Window k sits in its share of the wall, at least a wall thickness + 0.1 m from its ends.
+    const double share = north_len / nwin, start = k * share, margin_w = t + 0.1;
     Opening win;
     win.edge = north_edge;
-    win.width_m = std::min(rng.uniform(1.0, 1.8), north_len / 2 - 2 * t - 0.2);
+    win.width_m = std::min(rng.uniform(1.0, 1.8), share - 2 * margin_w);
     if (win.width_m < 0.5) break;
     win.bottom_m = rng.uniform(0.8, 1.0);
     win.top_m = std::min(rng.uniform(2.0, 2.3), lowest - 0.2);
-    const double half = north_len / 2;
-    win.at_m = (k == 0 ? 0.0 : half) + half / 2 + rng.uniform(-0.1, 0.1) * half;
-    if (nwin == 1) win.at_m = north_len / 2;
+    win.at_m = rng.uniform(start + margin_w + win.width_m / 2, start + share - margin_w - win.width_m / 2);
     room.windows.push_back(win);
   }
-  (void)north_start;
 
   Planner plan;
   plan.polygon = room.polygon;
