@@ -4,12 +4,14 @@
 //
 // Output frame: metres, right-handed, z up. 3DTK data (cm, left-handed, y up) is converted
 // automatically (X = z/100, Y = -x/100, Z = y/100); other formats use LoadOptions::unit_m and
-// LoadOptions::up_axis. Non-finite points are dropped and counted.
+// LoadOptions::up_axis. Non-finite points are dropped and counted. Formats, conventions and
+// errors: docs/input-formats.md.
 #include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "indoormap/core/cloud.hpp"
@@ -21,34 +23,43 @@ namespace indoormap::cloud {
 enum class UpAxis { kZ, kY };
 
 struct LoadOptions {
-  double unit_m = 1.0;         ///< metres per input unit for PCD / PLY / XYZ (0.01 for cm)
-  UpAxis up_axis = UpAxis::kZ;
-  int scan_first = -1;         ///< 3DTK: first scan number to read (-1: all)
-  int scan_last = -1;          ///< 3DTK: last scan number to read, inclusive (-1: all)
-  std::uint64_t max_points = 200'000'000;  ///< refuse larger inputs before allocating
-  /// Called now and then with the fraction [0, 1] of the current file read; may be empty.
+  /// Metres per input unit for PCD / PLY / XYZ (0.01 for cm); must be > 0. Not for 3DTK.
+  double unit_m = 1.0;
+  UpAxis up_axis = UpAxis::kZ;  ///< PCD / PLY / XYZ only; 3DTK is converted automatically
+  int scan_first = -1;          ///< 3DTK directory: first scan number to read (-1: from the first)
+  int scan_last = -1;           ///< 3DTK directory: last scan number, inclusive (-1: to the last)
+  /// Budget on the points read (NaN / Inf included) over all inputs; an input that would exceed
+  /// it is refused with BudgetError before its points are allocated.
+  std::uint64_t max_points = 200'000'000;
+  /// Called after every few MB of a text file (XYZ, ascii PCD, 3DTK .3d) with the fraction
+  /// [0, 1] of that file read; may be empty.
   std::function<void(const std::string& file, double fraction)> progress;
 };
 
 struct InputReport {
   std::string path;
-  std::string format;              ///< "pcd", "ply", "xyz", "3dtk"
-  std::uint64_t points_read = 0;   ///< points in the file(s), including dropped ones
+  std::string format;                ///< "pcd", "ply", "xyz", "3dtk"
+  std::uint64_t points_read = 0;     ///< points in the file(s), including dropped ones
   std::uint64_t points_dropped = 0;  ///< NaN / Inf points dropped
-  int scans = 0;                   ///< 3DTK: number of scan files read
-  bool scanner_known = false;      ///< a scanner position came from the file (pose, VIEWPOINT)
+  int scans = 0;                     ///< 3DTK: number of scan files read
+  /// A scanner position came from the input (PCD VIEWPOINT line, 3DTK .frames / .pose).
+  bool scanner_known = false;
 };
 
 struct LoadResult {
-  PointCloud cloud;                ///< merged points and scanner positions
+  /// Merged points, in input order, and scanner positions (one per PCD with a VIEWPOINT line,
+  /// one per distinct 3DTK scan position: sectors within 1 mm of each other count once).
+  PointCloud cloud;
   std::vector<InputReport> inputs;
 };
 
-/// Loads and merges every input. Throws InputError (names file and line) on bad input and
-/// BudgetError when the total point count would exceed options.max_points.
+/// Loads and merges every input. Throws InputError (names file and line) on bad input (missing,
+/// unreadable, unknown type, malformed, empty or all non-finite), BudgetError when the total
+/// point count would exceed options.max_points, UsageError for bad options or no paths.
 LoadResult load_clouds(const std::vector<std::string>& paths, const LoadOptions& options = {});
 
-/// Loads one input (file or 3DTK directory).
+/// Loads one input: a file (by extension: .pcd, .ply, .xyz / .txt / .csv, .3d) or a 3DTK scan
+/// directory.
 LoadResult load_cloud(const std::string& path, const LoadOptions& options = {});
 
 /// The parsed header of a PCD file, validated by us before PCL sees the file (Debian's PCL 1.13
@@ -61,15 +72,23 @@ struct PcdHeader {
   std::uint64_t width = 0;
   std::uint64_t height = 0;
   std::uint64_t points = 0;
+  bool has_viewpoint = false;                   ///< a VIEWPOINT line was present
   double viewpoint[7] = {0, 0, 0, 1, 0, 0, 0};  ///< tx ty tz qw qx qy qz
-  std::string data;             ///< "ascii", "binary", "binary_compressed"
-  std::uint64_t data_offset = 0;  ///< byte offset of the data section
+  std::string data;                             ///< "ascii", "binary", "binary_compressed"
+  std::uint64_t data_offset = 0;                ///< byte offset of the data section
+  std::uint64_t point_size = 0;                 ///< bytes per point in binary data
 };
 
 /// Parses and validates a PCD header from the file's bytes. Throws InputError naming the file
 /// and the header line on any inconsistency (missing FIELDS, x/y/z absent, WIDTH*HEIGHT !=
-/// POINTS, POINTS above max_points, body too short for binary data, ...).
+/// POINTS, POINTS == 0, data section too short for POINTS, ...), and BudgetError naming the
+/// file when POINTS exceeds max_points.
 PcdHeader read_pcd_header(const std::string& bytes, const std::string& file,
+                          std::uint64_t max_points);
+
+/// The same, from the first bytes of a file (`head`, at least the header plus 8 bytes) and the
+/// file's total size, so that large files need not be read twice.
+PcdHeader read_pcd_header(std::string_view head, std::uint64_t file_size, const std::string& file,
                           std::uint64_t max_points);
 
 /// Writes points (metres, given frame) as a binary PCD with fields x y z, atomically (temporary

@@ -1,0 +1,110 @@
+#include "cli.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <new>
+
+#include "indoormap/core/errors.hpp"
+
+namespace indoormap::app {
+
+void add_pipeline_options(CLI::App& app, PipelineCli& cli) {
+  app.add_option("inputs", cli.inputs,
+                 "Point clouds: .pcd, .ply, .xyz/.txt, or a 3DTK scan directory (several are merged)");
+  app.add_option("-o,--out", cli.out_dir, "Output directory (created if missing)");
+  app.add_option("-c,--config", cli.config_file, "YAML parameters (see config/default.yaml)");
+  app.add_flag("--print-config", cli.print_config, "Print the effective parameters as YAML and exit");
+  app.add_option("--scans", cli.scans, "3DTK: scan numbers to read, e.g. 0-8 or 3");
+  app.add_option("--up-axis", cli.up_axis, "Up axis of PCD/PLY/XYZ input: z (default) or y")
+      ->check(CLI::IsMember({"z", "y"}));
+  app.add_option("--unit", cli.unit, "Unit of PCD/PLY/XYZ input: m (default), cm, mm, or metres per unit");
+  app.add_option("--scanner", cli.scanners,
+                 "Scanner position X,Y,Z in metres (input frame); repeat for several. Overrides file poses");
+  app.add_option("--cell-m", cli.cell_m, "Voxel / map cell size in metres (voxel.cell_m)");
+  app.add_flag("--no-level", cli.no_level, "Do not level the cloud (level.enabled: false)");
+}
+
+namespace {
+
+double parse_number(const std::string& s, const std::string& what) {
+  try {
+    std::size_t used = 0;
+    const double v = std::stod(s, &used);
+    if (used != s.size() || !std::isfinite(v)) throw std::invalid_argument(s);
+    return v;
+  } catch (const std::exception&) {
+    throw UsageError(what + ": '" + s + "' is not a number");
+  }
+}
+
+}  // namespace
+
+PipelineConfig resolve_config(const PipelineCli& cli) {
+  PipelineConfig c;
+  if (!cli.config_file.empty()) merge_config_file(c, cli.config_file);
+  if (!cli.up_axis.empty()) c.load.up_axis = cli.up_axis == "y" ? cloud::UpAxis::kY : cloud::UpAxis::kZ;
+  if (!cli.unit.empty()) {
+    if (cli.unit == "m") c.load.unit_m = 1.0;
+    else if (cli.unit == "cm") c.load.unit_m = 0.01;
+    else if (cli.unit == "mm") c.load.unit_m = 0.001;
+    else c.load.unit_m = parse_number(cli.unit, "--unit");
+  }
+  if (!cli.scans.empty()) {
+    const auto dash = cli.scans.find('-');
+    const std::string a = cli.scans.substr(0, dash);
+    const std::string b = dash == std::string::npos ? a : cli.scans.substr(dash + 1);
+    const double first = parse_number(a, "--scans"), last = parse_number(b, "--scans");
+    if (first < 0 || last < first || first != std::floor(first) || last != std::floor(last) || last > 1e6)
+      throw UsageError("--scans: expected A-B with 0 <= A <= B, got '" + cli.scans + "'");
+    c.load.scan_first = static_cast<int>(first);
+    c.load.scan_last = static_cast<int>(last);
+  }
+  if (!cli.scanners.empty()) {
+    c.scanners.clear();
+    for (const auto& s : cli.scanners) {
+      std::vector<double> v;
+      std::size_t start = 0;
+      while (start <= s.size()) {
+        const auto comma = s.find(',', start);
+        v.push_back(parse_number(s.substr(start, comma - start), "--scanner"));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+      }
+      if (v.size() != 3) throw UsageError("--scanner: expected X,Y,Z, got '" + s + "'");
+      c.scanners.emplace_back(v[0], v[1], v[2]);
+    }
+  }
+  if (cli.cell_m != 0.0) c.map.voxel.cell_m = cli.cell_m;
+  if (cli.no_level) c.map.level.enabled = false;
+  validate(c);
+  return c;
+}
+
+int run_guarded(const std::string& prog, const std::function<int()>& body) {
+  try {
+    return body();
+  } catch (const Error& e) {
+    std::cerr << prog << ": " << e.what() << "\n";
+    return static_cast<int>(e.exit_code());
+  } catch (const std::bad_alloc&) {
+    std::cerr << prog << ": out of memory\n";
+    return static_cast<int>(ExitCode::kFailure);
+  } catch (const std::exception& e) {
+    std::cerr << prog << ": " << e.what() << "\n";
+    return static_cast<int>(ExitCode::kFailure);
+  }
+}
+
+std::function<void(const std::string&, double)> terminal_progress() {
+  if (!::isatty(STDERR_FILENO)) return {};
+  return [](const std::string& file, double fraction) {
+    std::fprintf(stderr, "\r%s: %3d%%%s", file.c_str(), static_cast<int>(fraction * 100.0),
+                 fraction >= 1.0 ? "\n" : "");
+    std::fflush(stderr);
+  };
+}
+
+}  // namespace indoormap::app

@@ -1,0 +1,37 @@
+#pragma once
+// Command-line plumbing shared by the pipeline apps (pcd-to-map, furniture-extract, ...).
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "config.hpp"
+
+namespace indoormap::app {
+
+/// Options every pipeline app takes: inputs, output dir, config, and overrides of config keys.
+struct PipelineCli {
+  std::vector<std::string> inputs;
+  std::string out_dir;
+  std::string config_file;
+  bool print_config = false;
+  std::string scans;                  ///< "A-B" or "N"
+  std::string up_axis;                ///< "z" / "y"
+  std::string unit;                   ///< "m", "cm", "mm" or metres per unit
+  std::vector<std::string> scanners;  ///< "X,Y,Z"
+  double cell_m = 0.0;                ///< 0: from config
+  bool no_level = false;
+};
+
+void add_pipeline_options(CLI::App& app, PipelineCli& cli);
+
+/// Defaults, then the config file, then the command-line overrides; validated.
+PipelineConfig resolve_config(const PipelineCli& cli);
+
+/// Runs body, maps exceptions to the documented exit codes and prints "<prog>: <message>".
+int run_guarded(const std::string& prog, const std::function<int()>& body);
+
+/// Prints "\r<file>: 42%" on stderr when stderr is a terminal (progress of long loads).
+std::function<void(const std::string&, double)> terminal_progress();
+
+}  // namespace indoormap::app

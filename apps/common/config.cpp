@@ -1,0 +1,235 @@
+#include "config.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <fstream>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <type_traits>
+
+#include "indoormap/core/errors.hpp"
+
+namespace indoormap::app {
+
+namespace {
+
+// Calls f(section, key, field) for every configurable field, in documentation order. One list
+// serves reading, printing and validation, so they cannot drift apart.
+template <class F>
+void visit(PipelineConfig& c, F&& f) {
+  f("input", "unit_m", c.load.unit_m);
+  f("input", "up_axis", c.load.up_axis);
+  f("input", "max_points", c.load.max_points);
+  f("input", "scanners", c.scanners);
+  auto& lv = c.map.level;
+  f("level", "enabled", lv.enabled);
+  f("level", "max_tilt_deg", lv.max_tilt_deg);
+  f("level", "band_m", lv.band_m);
+  f("level", "inlier_m", lv.inlier_m);
+  f("level", "iterations", lv.iterations);
+  f("level", "sample_points", lv.sample_points);
+  f("level", "min_inliers", lv.min_inliers);
+  f("level", "min_fill", lv.min_fill);
+  f("level", "max_normal_disagreement_deg", lv.max_normal_disagreement_deg);
+  f("level", "seed", lv.seed);
+  auto& vx = c.map.voxel;
+  f("voxel", "cell_m", vx.cell_m);
+  f("voxel", "max_cells", vx.max_cells);
+  f("voxel", "bounds_gap_m", vx.bounds_gap_m);
+  f("voxel", "bounds_sample", vx.bounds_sample);
+  auto& ly = c.map.layers;
+  f("layers", "min_points_per_voxel", ly.min_points_per_voxel);
+  f("layers", "floor_min_fraction", ly.floor_min_fraction);
+  f("layers", "ceiling_min_fraction", ly.ceiling_min_fraction);
+  f("layers", "min_room_height_m", ly.min_room_height_m);
+  f("layers", "floor_clearance_m", ly.floor_clearance_m);
+  f("layers", "ceiling_clearance_m", ly.ceiling_clearance_m);
+  f("layers", "wall_band_m", ly.wall_band_m);
+  f("layers", "floor_z_m", ly.floor_z_m);
+  f("layers", "ceiling_z_m", ly.ceiling_z_m);
+  f("layers", "wall_band_lo_m", ly.wall_band_lo_m);
+  f("layers", "wall_band_hi_m", ly.wall_band_hi_m);
+  f("layers", "furniture_band_lo_m", ly.furniture_band_lo_m);
+  f("layers", "furniture_band_hi_m", ly.furniture_band_hi_m);
+  auto& lo = c.map.layout;
+  f("layout", "furniture_closing_iterations", lo.furniture_closing_iterations);
+  f("layout", "enclosed_max_area_m2", lo.enclosed_max_area_m2);
+  f("layout", "seed_search_radius_m", lo.seed_search_radius_m);
+}
+
+std::string axis_name(cloud::UpAxis a) { return a == cloud::UpAxis::kY ? "y" : "z"; }
+
+struct Reader {
+  const YAML::Node& root;
+  const std::string& file;
+
+  [[noreturn]] void fail(const std::string& key, const YAML::Node& n, const std::string& what) const {
+    throw InputError(file, "key '" + key + "': " + what, static_cast<std::size_t>(n.Mark().line + 1));
+  }
+
+  template <class T>
+  void operator()(const char* section, const char* key, T& v) const {
+    const YAML::Node sec = root[section];
+    if (!sec) return;
+    const YAML::Node n = sec[key];
+    if (!n) return;
+    const std::string full = std::string(section) + "." + key;
+    try {
+      if constexpr (std::is_same_v<T, cloud::UpAxis>) {
+        const auto s = n.as<std::string>();
+        if (s == "z") v = cloud::UpAxis::kZ;
+        else if (s == "y") v = cloud::UpAxis::kY;
+        else fail(full, n, "expected 'z' or 'y', got '" + s + "'");
+      } else if constexpr (std::is_same_v<T, std::optional<double>>) {
+        if (n.IsNull()) v.reset();
+        else v = n.as<double>();
+      } else if constexpr (std::is_same_v<T, std::vector<Eigen::Vector3d>>) {
+        if (!n.IsSequence()) fail(full, n, "expected a list of [x, y, z]");
+        v.clear();
+        for (const auto& e : n) {
+          if (!e.IsSequence() || e.size() != 3) fail(full, e, "each scanner is [x, y, z]");
+          v.emplace_back(e[0].as<double>(), e[1].as<double>(), e[2].as<double>());
+        }
+      } else if constexpr (std::is_same_v<T, bool>) {
+        v = n.as<bool>();
+      } else if constexpr (std::is_integral_v<T>) {
+        const auto d = n.as<long double>();
+        if (d < static_cast<long double>(std::numeric_limits<T>::min()) ||
+            d > static_cast<long double>(std::numeric_limits<T>::max()) ||
+            d != static_cast<long double>(static_cast<long long>(d)))
+          fail(full, n, "expected an integer in range");
+        v = static_cast<T>(d);
+      } else {
+        v = n.as<T>();
+      }
+    } catch (const YAML::Exception&) {
+      fail(full, n, std::is_same_v<T, bool> ? "expected true or false" : "expected a number");
+    }
+  }
+};
+
+}  // namespace
+
+void merge_config_file(PipelineConfig& config, const std::string& path) {
+  YAML::Node root;
+  try {
+    std::ifstream in(path);
+    if (!in) throw InputError(path, "cannot open the config file");
+    root = YAML::Load(in);
+  } catch (const YAML::Exception& e) {
+    throw InputError(path, "invalid YAML: " + e.msg, static_cast<std::size_t>(e.mark.line + 1));
+  }
+  if (root.IsNull()) return;  // an empty file means "all defaults"
+  if (!root.IsMap()) throw InputError(path, "the config must be a mapping of sections");
+
+  std::map<std::string, std::set<std::string>> known;
+  visit(config, [&](const char* s, const char* k, auto&) { known[s].insert(k); });
+  for (const auto& sec : root) {
+    const auto name = sec.first.as<std::string>();
+    const auto it = known.find(name);
+    if (it == known.end())
+      throw InputError(path, "unknown section '" + name + "' (sections: input, level, voxel, layers, layout)",
+                       static_cast<std::size_t>(sec.first.Mark().line + 1));
+    if (sec.second.IsNull()) continue;
+    if (!sec.second.IsMap())
+      throw InputError(path, "section '" + name + "' must be a mapping",
+                       static_cast<std::size_t>(sec.second.Mark().line + 1));
+    for (const auto& kv : sec.second) {
+      const auto key = kv.first.as<std::string>();
+      if (!it->second.count(key))
+        throw InputError(path, "unknown key '" + name + "." + key + "'",
+                         static_cast<std::size_t>(kv.first.Mark().line + 1));
+    }
+  }
+  visit(config, Reader{root, path});
+}
+
+void validate(const PipelineConfig& c) {
+  auto require = [](bool ok, const std::string& what) {
+    if (!ok) throw UsageError("invalid parameter " + what);
+  };
+  require(c.load.unit_m > 0 && std::isfinite(c.load.unit_m), "input.unit_m: must be > 0");
+  require(c.load.max_points > 0, "input.max_points: must be > 0");
+  for (const auto& s : c.scanners) require(s.allFinite(), "input.scanners: must be finite");
+  const auto& lv = c.map.level;
+  require(lv.max_tilt_deg > 0 && lv.max_tilt_deg < 90, "level.max_tilt_deg: must be in (0, 90)");
+  require(lv.band_m > 0, "level.band_m: must be > 0");
+  require(lv.inlier_m > 0, "level.inlier_m: must be > 0");
+  require(lv.iterations > 0 && lv.iterations <= 100000, "level.iterations: must be in [1, 100000]");
+  require(lv.sample_points >= 3 && lv.sample_points <= 100'000'000,
+          "level.sample_points: must be in [3, 1e8]");
+  require(lv.min_fill >= 0 && lv.min_fill <= 1, "level.min_fill: must be in [0, 1]");
+  const auto& vx = c.map.voxel;
+  require(vx.cell_m >= 0.001 && vx.cell_m <= 10, "voxel.cell_m: must be in [0.001, 10] m");
+  require(vx.max_cells > 0, "voxel.max_cells: must be > 0");
+  require(vx.bounds_gap_m > 0, "voxel.bounds_gap_m: must be > 0");
+  require(vx.bounds_sample > 0 && vx.bounds_sample <= 100'000'000, "voxel.bounds_sample: must be in [1, 1e8]");
+  const auto& ly = c.map.layers;
+  require(ly.min_points_per_voxel >= 1 && ly.min_points_per_voxel <= 65535,
+          "layers.min_points_per_voxel: must be in [1, 65535]");
+  require(ly.floor_min_fraction > 0 && ly.floor_min_fraction <= 1, "layers.floor_min_fraction: must be in (0, 1]");
+  require(ly.ceiling_min_fraction > 0 && ly.ceiling_min_fraction <= 1,
+          "layers.ceiling_min_fraction: must be in (0, 1]");
+  require(ly.wall_band_m > 0, "layers.wall_band_m: must be > 0");
+  require(ly.min_room_height_m >= 0, "layers.min_room_height_m: must be >= 0");
+  require(ly.floor_clearance_m >= 0 && ly.ceiling_clearance_m >= 0, "layers.*_clearance_m: must be >= 0");
+  const auto& lo = c.map.layout;
+  require(lo.furniture_closing_iterations >= 0 && lo.furniture_closing_iterations <= 20,
+          "layout.furniture_closing_iterations: must be in [0, 20]");
+  require(lo.enclosed_max_area_m2 >= 0, "layout.enclosed_max_area_m2: must be >= 0");
+  require(lo.seed_search_radius_m >= 0, "layout.seed_search_radius_m: must be >= 0");
+}
+
+std::string to_yaml(const PipelineConfig& config) {
+  PipelineConfig c = config;
+  YAML::Emitter out;
+  out << YAML::BeginMap;
+  std::string open;
+  visit(c, [&](const char* s, const char* k, auto& v) {
+    using T = std::decay_t<decltype(v)>;
+    if (open != s) {
+      if (!open.empty()) out << YAML::EndMap;
+      out << YAML::Key << s << YAML::Value << YAML::BeginMap;
+      open = s;
+    }
+    out << YAML::Key << k << YAML::Value;
+    if constexpr (std::is_same_v<T, cloud::UpAxis>) {
+      out << axis_name(v);
+    } else if constexpr (std::is_same_v<T, std::optional<double>>) {
+      if (v) out << *v;
+      else out << YAML::Null;
+    } else if constexpr (std::is_same_v<T, std::vector<Eigen::Vector3d>>) {
+      out << YAML::Flow << YAML::BeginSeq;
+      for (const auto& p : v) out << YAML::Flow << YAML::BeginSeq << p.x() << p.y() << p.z() << YAML::EndSeq;
+      out << YAML::EndSeq;
+    } else {
+      out << v;
+    }
+  });
+  out << YAML::EndMap << YAML::EndMap;
+  return std::string(out.c_str()) + "\n";
+}
+
+nlohmann::json to_json(const PipelineConfig& config) {
+  PipelineConfig c = config;
+  nlohmann::json j = nlohmann::json::object();
+  visit(c, [&](const char* s, const char* k, auto& v) {
+    using T = std::decay_t<decltype(v)>;
+    auto& slot = j[s][k];
+    if constexpr (std::is_same_v<T, cloud::UpAxis>) {
+      slot = axis_name(v);
+    } else if constexpr (std::is_same_v<T, std::optional<double>>) {
+      slot = v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+    } else if constexpr (std::is_same_v<T, std::vector<Eigen::Vector3d>>) {
+      slot = nlohmann::json::array();
+      for (const auto& p : v) slot.push_back({p.x(), p.y(), p.z()});
+    } else {
+      slot = v;
+    }
+  });
+  return j;
+}
+
+}  // namespace indoormap::app

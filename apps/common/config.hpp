@@ -1,0 +1,31 @@
+#pragma once
+// The YAML configuration of the pipeline apps. The tree mirrors the parameter structs:
+// input.*, level.*, voxel.*, layers.*, layout.*; defaults are the structs' defaults and are
+// documented in config/default.yaml. Unknown keys are errors (a typo must not be ignored).
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "indoormap/cloud/load.hpp"
+#include "indoormap/layout/pipeline.hpp"
+
+namespace indoormap::app {
+
+struct PipelineConfig {
+  cloud::LoadOptions load;
+  /// Scanner positions (input frame after unit / axis conversion, metres). When set they replace
+  /// the positions found in the files.
+  std::vector<Eigen::Vector3d> scanners;
+  layout::MapParams map;
+};
+
+/// Reads a YAML file over the defaults. Throws InputError naming the file, key and line.
+void merge_config_file(PipelineConfig& config, const std::string& path);
+/// Checks ranges (cell_m > 0, ...). Throws UsageError naming the key.
+void validate(const PipelineConfig& config);
+/// The effective configuration as YAML (what --print-config prints) and as JSON (summary.json).
+std::string to_yaml(const PipelineConfig& config);
+nlohmann::json to_json(const PipelineConfig& config);
+
+}  // namespace indoormap::app

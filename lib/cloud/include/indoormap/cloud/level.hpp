@@ -1,0 +1,59 @@
+#pragma once
+// Levelling (pipeline step 2): real scans are not level, so the floor and the ceiling smear over
+// several voxel layers. We fit the floor and ceiling planes robustly (RANSAC over near-horizontal
+// planes, then least squares on the inliers) and rotate the cloud so that they are horizontal.
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "indoormap/core/cloud.hpp"
+
+namespace indoormap::cloud {
+
+struct LevelParams {
+  bool enabled = true;
+  double max_tilt_deg = 10.0;      ///< planes tilted more than this are not floor / ceiling
+  double band_m = 0.6;             ///< search band above the low / below the high height percentile
+  double inlier_m = 0.03;          ///< RANSAC inlier distance
+  int iterations = 300;            ///< RANSAC iterations per plane
+  std::size_t sample_points = 200000;  ///< points used for the fit (evenly strided)
+  double low_percentile = 0.5;     ///< [%] robust low height, start of the floor band
+  double high_percentile = 99.5;   ///< [%] robust high height, end of the ceiling band
+  std::size_t min_inliers = 200;   ///< fewer inliers: plane not found
+  /// The inliers must cover this share of their bounding box (on a 0.25 m grid): a floor or a
+  /// ceiling is an area, the top edges of the walls of a ceiling-less scan are only a ring.
+  double min_fill = 0.3;
+  double max_normal_disagreement_deg = 2.0;  ///< floor/ceiling normals further apart: floor only
+  std::uint64_t seed = 1;
+};
+
+struct PlaneFit {
+  bool found = false;
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< unit, pointing up (z > 0)
+  double offset_m = 0.0;     ///< plane: normal . p = offset_m
+  std::size_t inliers = 0;   ///< among the sampled points
+  double rms_m = 0.0;        ///< RMS distance of the inliers
+};
+
+struct LevelResult {
+  bool levelled = false;          ///< false: rotation is identity (disabled or no plane found)
+  Eigen::Matrix3d map_from_input = Eigen::Matrix3d::Identity();  ///< rotation about the origin
+  double tilt_deg = 0.0;          ///< angle between the measured up direction and z
+  Eigen::Vector3d up_input = Eigen::Vector3d::UnitZ();  ///< measured up direction, input frame
+  PlaneFit floor;                 ///< in the input frame
+  PlaneFit ceiling;               ///< in the input frame
+  std::string note;               ///< why not levelled, or which planes were used
+};
+
+/// Estimates the levelling rotation. Deterministic for a fixed seed. Never throws on data it
+/// cannot level: the result says so (levelled = false) and why.
+LevelResult estimate_level(const std::vector<Eigen::Vector3f>& points, const LevelParams& params);
+
+/// Rotates points and scanner positions in place: p <- R p.
+void rotate(PointCloud& cloud, const Eigen::Matrix3d& rotation);
+
+/// Least-squares plane (normal up) through points; nullopt-like result (found = false) for < 3.
+PlaneFit fit_plane_least_squares(const std::vector<Eigen::Vector3d>& points);
+
+}  // namespace indoormap::cloud

@@ -1,0 +1,98 @@
+#pragma once
+// Voxel occupancy grid with a count per voxel (pipeline step 3) and the height-layer analysis
+// (step 4) that finds the floor, the ceiling, the wall band and the furniture band.
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "indoormap/core/grid.hpp"
+
+namespace indoormap::cloud {
+
+struct Bounds3 {
+  Eigen::Vector3d lo_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d hi_m = Eigen::Vector3d::Zero();
+};
+
+struct VoxelParams {
+  double cell_m = 0.05;                    ///< voxel edge
+  std::int64_t max_cells = 400'000'000;    ///< refuse larger grids before allocating (2 B/cell)
+  double bounds_gap_m = 1.0;               ///< robust bounds stop at an empty gap this wide
+  std::size_t bounds_sample = 262144;      ///< points sampled for the gap search
+};
+
+/// Dense voxel grid, layers contiguous: index = (iz * ny + iy) * nx + ix. Counts saturate.
+struct VoxelGrid {
+  Eigen::Vector3d origin_m = Eigen::Vector3d::Zero();  ///< map-frame corner of voxel (0,0,0)
+  double cell_m = 0.05;
+  std::int64_t nx = 0, ny = 0, nz = 0;
+  std::vector<std::uint16_t> counts;
+  std::uint64_t points_inside = 0;
+  std::uint64_t points_outside = 0;  ///< beyond the robust bounds (or non-finite)
+
+  std::uint16_t count(std::int64_t ix, std::int64_t iy, std::int64_t iz) const {
+    return counts[static_cast<std::size_t>((iz * ny + iy) * nx + ix)];
+  }
+  /// The 2D grid of one layer (x, y) in map metres.
+  GridGeometry geometry2d() const {
+    return GridGeometry({origin_m.x(), origin_m.y()}, cell_m, static_cast<int>(nx),
+                        static_cast<int>(ny));
+  }
+  double layer_bottom_m(std::int64_t iz) const { return origin_m.z() + iz * cell_m; }
+  double layer_center_m(std::int64_t iz) const { return origin_m.z() + (iz + 0.5) * cell_m; }
+};
+
+/// Bounds of the main body of the data: per axis, the run of a sample around the median with no
+/// empty gap wider than bounds_gap_m, then refined on all points within one gap of it. Points seen
+/// through a window far outside the room do not stretch the grid. Throws InputError for < 1 point.
+Bounds3 robust_bounds(const std::vector<Eigen::Vector3f>& points, const VoxelParams& params);
+
+/// Counts points per voxel inside bounds. Throws BudgetError (before allocating) when the grid
+/// would exceed params.max_cells.
+VoxelGrid voxelize(const std::vector<Eigen::Vector3f>& points, const Bounds3& bounds,
+                   const VoxelParams& params);
+
+struct LayerParams {
+  int min_points_per_voxel = 1;        ///< a voxel with fewer points counts as empty
+  double floor_min_fraction = 0.3;     ///< floor: first layer from below with this share of the max
+  double ceiling_min_fraction = 0.25;  ///< ceiling: first layer from above with this share of max
+  double min_room_height_m = 1.8;      ///< the ceiling lies at least this far above the floor
+  double floor_clearance_m = 0.10;     ///< the furniture band starts this far above the floor
+  double ceiling_clearance_m = 0.15;   ///< the wall band ends this far below the ceiling
+  double wall_band_m = 0.50;           ///< thickness of the wall band
+  // Overrides (map-frame heights, metres); unset means "detect".
+  std::optional<double> floor_z_m;
+  std::optional<double> ceiling_z_m;
+  std::optional<double> wall_band_lo_m, wall_band_hi_m;
+  std::optional<double> furniture_band_lo_m, furniture_band_hi_m;
+};
+
+/// A height interval, both as metres and as the inclusive range of layers it covers.
+struct HeightBand {
+  double lo_m = 0.0, hi_m = 0.0;
+  std::int64_t lo_layer = 0, hi_layer = -1;  ///< inclusive; empty when hi_layer < lo_layer
+};
+
+struct LayerAnalysis {
+  std::vector<std::int64_t> occupied_per_layer;  ///< bottom up
+  std::int64_t floor_layer = 0;
+  double floor_z_m = 0.0;
+  bool ceiling_found = false;   ///< false: ceiling_z_m is the documented fallback (top of data)
+  std::int64_t ceiling_layer = 0;
+  double ceiling_z_m = 0.0;
+  HeightBand wall_band;
+  HeightBand furniture_band;
+  std::vector<std::string> warnings;
+};
+
+/// Layer analysis bottom up by the number of occupied cells per layer. Throws InputError when
+/// all data lies in fewer than three layers (nothing to separate).
+LayerAnalysis analyse_layers(const VoxelGrid& grid, const LayerParams& params);
+
+/// The 2D occupancy of a height band: cell = 1 where any voxel of the band column holds at least
+/// min_points points (M_w for the wall band, M_f for the furniture band).
+Grid<std::uint8_t> project_band(const VoxelGrid& grid, const HeightBand& band, int min_points);
+
+}  // namespace indoormap::cloud

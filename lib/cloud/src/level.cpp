@@ -1,0 +1,207 @@
+#include "indoormap/cloud/level.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace indoormap::cloud {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+double deg2rad(double d) { return d * kPi / 180.0; }
+double rad2deg(double r) { return r * 180.0 / kPi; }
+
+std::vector<Eigen::Vector3d> stride_sample(const std::vector<Eigen::Vector3f>& points,
+                                           std::size_t max_count) {
+  std::vector<Eigen::Vector3d> out;
+  if (points.empty() || max_count == 0) return out;
+  const double step = std::max(1.0, static_cast<double>(points.size()) / max_count);
+  out.reserve(std::min(points.size(), max_count));
+  for (double i = 0; i < points.size(); i += step) {
+    const auto& p = points[static_cast<std::size_t>(i)];
+    if (p.allFinite()) out.push_back(p.cast<double>());
+  }
+  return out;
+}
+
+double percentile(std::vector<double> v, double pct) {
+  if (v.empty()) return 0.0;
+  const auto k = static_cast<std::size_t>(std::clamp(pct / 100.0, 0.0, 1.0) * (v.size() - 1));
+  std::nth_element(v.begin(), v.begin() + k, v.end());
+  return v[k];
+}
+
+// Share of the inliers' bounding box (0.25 m cells) that holds inliers.
+double fill_ratio(const std::vector<Eigen::Vector3d>& cand, const PlaneFit& f, double inlier_m) {
+  constexpr double kCell = 0.25;
+  Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
+  std::vector<Eigen::Vector2d> in;
+  for (const auto& q : cand)
+    if (std::abs(f.normal.dot(q) - f.offset_m) <= inlier_m) {
+      in.emplace_back(q.x(), q.y());
+      lo = lo.cwiseMin(in.back());
+      hi = hi.cwiseMax(in.back());
+    }
+  if (in.empty()) return 0.0;
+  const auto w = static_cast<std::size_t>((hi.x() - lo.x()) / kCell) + 1;
+  const auto h = static_cast<std::size_t>((hi.y() - lo.y()) / kCell) + 1;
+  if (w * h > 4'000'000) return 1.0;  // far beyond any room: do not judge
+  std::vector<std::uint8_t> occ(w * h, 0);
+  for (const auto& q : in)
+    occ[static_cast<std::size_t>((q.y() - lo.y()) / kCell) * w +
+        static_cast<std::size_t>((q.x() - lo.x()) / kCell)] = 1;
+  std::size_t n = 0;
+  for (auto v : occ) n += v;
+  return static_cast<double>(n) / static_cast<double>(w * h);
+}
+
+// RANSAC over planes within max_tilt of horizontal, then two rounds of least-squares refinement
+// on the inliers. Candidates are the points of one height band.
+PlaneFit fit_horizontal_plane(const std::vector<Eigen::Vector3d>& cand, const LevelParams& p,
+                              std::mt19937_64& rng) {
+  PlaneFit best;
+  if (cand.size() < 3) return best;
+  const double cos_max = std::cos(deg2rad(p.max_tilt_deg));
+  std::uniform_int_distribution<std::size_t> pick(0, cand.size() - 1);
+  std::size_t best_count = 0;
+  Eigen::Vector3d best_n = Eigen::Vector3d::UnitZ();
+  double best_d = 0.0;
+  for (int it = 0; it < p.iterations; ++it) {
+    const auto& a = cand[pick(rng)];
+    const auto& b = cand[pick(rng)];
+    const auto& c = cand[pick(rng)];
+    Eigen::Vector3d n = (b - a).cross(c - a);
+    const double len = n.norm();
+    if (len < 1e-9) continue;
+    n /= len;
+    if (n.z() < 0) n = -n;
+    if (n.z() < cos_max) continue;
+    const double d = n.dot(a);
+    std::size_t count = 0;
+    for (const auto& q : cand) count += std::abs(n.dot(q) - d) <= p.inlier_m;
+    if (count > best_count) {
+      best_count = count;
+      best_n = n;
+      best_d = d;
+    }
+  }
+  if (best_count < std::max<std::size_t>(3, p.min_inliers)) return best;
+
+  Eigen::Vector3d n = best_n;
+  double d = best_d;
+  for (int round = 0; round < 2; ++round) {
+    std::vector<Eigen::Vector3d> inl;
+    inl.reserve(best_count);
+    for (const auto& q : cand)
+      if (std::abs(n.dot(q) - d) <= p.inlier_m) inl.push_back(q);
+    PlaneFit f = fit_plane_least_squares(inl);
+    if (!f.found || f.normal.z() < cos_max) break;
+    n = f.normal;
+    d = f.offset_m;
+    best = f;
+  }
+  if (!best.found) {
+    best.found = true;
+    best.normal = n;
+    best.offset_m = d;
+    best.inliers = best_count;
+  }
+  if (fill_ratio(cand, best, p.inlier_m) < p.min_fill) return PlaneFit{};
+  return best;
+}
+
+}  // namespace
+
+PlaneFit fit_plane_least_squares(const std::vector<Eigen::Vector3d>& points) {
+  PlaneFit f;
+  if (points.size() < 3) return f;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const auto& q : points) mean += q;
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const auto& q : points) {
+    const Eigen::Vector3d d = q - mean;
+    cov += d * d.transpose();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+  Eigen::Vector3d n = es.eigenvectors().col(0);  // smallest eigenvalue
+  if (n.z() < 0) n = -n;
+  f.found = true;
+  f.normal = n.normalized();
+  f.offset_m = f.normal.dot(mean);
+  f.inliers = points.size();
+  double ss = 0.0;
+  for (const auto& q : points) ss += std::pow(f.normal.dot(q) - f.offset_m, 2);
+  f.rms_m = std::sqrt(ss / static_cast<double>(points.size()));
+  return f;
+}
+
+LevelResult estimate_level(const std::vector<Eigen::Vector3f>& points, const LevelParams& params) {
+  LevelResult r;
+  if (!params.enabled) {
+    r.note = "levelling disabled";
+    return r;
+  }
+  const auto sample = stride_sample(points, params.sample_points);
+  if (sample.size() < 3) {
+    r.note = "too few points to level";
+    return r;
+  }
+  std::vector<double> zs;
+  zs.reserve(sample.size());
+  for (const auto& q : sample) zs.push_back(q.z());
+  const double z_lo = percentile(zs, params.low_percentile);
+  const double z_hi = percentile(zs, params.high_percentile);
+
+  // The bands reach a little beyond the percentiles: with a tilt the plane spans a height range
+  // around them.
+  std::vector<Eigen::Vector3d> low, high;
+  const double reach = 0.5 * params.band_m;
+  for (const auto& q : sample) {
+    if (q.z() >= z_lo - reach && q.z() <= z_lo + params.band_m) low.push_back(q);
+    if (q.z() <= z_hi + reach && q.z() >= z_hi - params.band_m) high.push_back(q);
+  }
+  std::mt19937_64 rng(params.seed);
+  r.floor = fit_horizontal_plane(low, params, rng);
+  // A ceiling must lie well above the floor; with a flat cloud both bands are the same points.
+  if (z_hi - z_lo > 2.0 * params.band_m) r.ceiling = fit_horizontal_plane(high, params, rng);
+
+  Eigen::Vector3d up;
+  if (r.floor.found && r.ceiling.found) {
+    const double angle = rad2deg(std::acos(std::clamp(r.floor.normal.dot(r.ceiling.normal), -1.0, 1.0)));
+    if (angle <= params.max_normal_disagreement_deg) {
+      up = (r.floor.normal * static_cast<double>(r.floor.inliers) +
+            r.ceiling.normal * static_cast<double>(r.ceiling.inliers))
+               .normalized();
+      r.note = "floor and ceiling planes";
+    } else {
+      up = r.floor.normal;
+      r.note = "floor plane only (ceiling not parallel to floor: " + std::to_string(angle) + " deg)";
+    }
+  } else if (r.floor.found) {
+    up = r.floor.normal;
+    r.note = "floor plane only (no ceiling plane found)";
+  } else if (r.ceiling.found) {
+    up = r.ceiling.normal;
+    r.note = "ceiling plane only (no floor plane found)";
+  } else {
+    r.note = "no near-horizontal floor or ceiling plane found; cloud left as it is";
+    return r;
+  }
+  r.levelled = true;
+  r.up_input = up;
+  r.map_from_input = Eigen::Quaterniond::FromTwoVectors(up, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  r.tilt_deg = rad2deg(std::acos(std::clamp(up.z(), -1.0, 1.0)));
+  return r;
+}
+
+void rotate(PointCloud& cloud, const Eigen::Matrix3d& rotation) {
+  const Eigen::Matrix3f rf = rotation.cast<float>();
+  for (auto& p : cloud.points) p = rf * p;
+  for (auto& s : cloud.scanners) s = rotation * s;
+}
+
+}  // namespace indoormap::cloud

@@ -1,0 +1,176 @@
+// Dispatch by extension / directory, merging, unit and up-axis conversion, non-finite dropping,
+// and the point budget shared by every reader.
+#include "indoormap/cloud/load.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+
+#include "indoormap/core/errors.hpp"
+#include "load_internal.hpp"
+
+namespace indoormap::cloud {
+
+namespace fs = std::filesystem;
+
+namespace detail {
+
+void check_budget(const std::string& file, std::uint64_t points, const Budget& budget) {
+  if (points <= budget.remaining()) return;
+  std::string msg = file + ": " + std::to_string(points) + " points exceed the point budget (" +
+                    "max_points " + std::to_string(budget.max_points);
+  if (budget.used > 0) msg += ", " + std::to_string(budget.used) + " already loaded";
+  throw BudgetError(msg + ")");
+}
+
+void reserve_more(std::vector<Eigen::Vector3f>& out, std::uint64_t n) {
+  const std::size_t need = out.size() + static_cast<std::size_t>(n);
+  if (need <= out.capacity()) return;
+  out.reserve(std::max(need, std::min(2 * out.capacity(), need + need / 2)));
+}
+
+std::uint64_t checked_file_size(const std::string& file) {
+  std::error_code ec;
+  const auto status = fs::status(file, ec);
+  if (ec || !fs::exists(status)) throw InputError(file, "no such file");
+  if (fs::is_directory(status)) throw InputError(file, "is a directory, expected a file");
+  if (!fs::is_regular_file(status)) throw InputError(file, "not a regular file");
+  const auto size = fs::file_size(file, ec);
+  if (ec) throw InputError(file, "cannot read the file size: " + ec.message());
+  return size;
+}
+
+namespace {
+struct FileCloser {
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
+
+std::string read_up_to(const std::string& file, std::uint64_t bytes) {
+  std::unique_ptr<std::FILE, FileCloser> f(std::fopen(file.c_str(), "rb"));
+  if (!f) throw InputError(file, std::string("cannot open: ") + std::strerror(errno));
+  std::string buf(static_cast<std::size_t>(bytes), '\0');
+  const std::size_t got = std::fread(buf.data(), 1, buf.size(), f.get());
+  if (got < buf.size() && std::ferror(f.get())) throw InputError(file, "read error");
+  buf.resize(got);
+  return buf;
+}
+}  // namespace
+
+std::string read_file_bytes(const std::string& file, std::uint64_t limit_bytes) {
+  const auto size = checked_file_size(file);
+  if (size > limit_bytes)
+    throw BudgetError(file + ": file of " + std::to_string(size) + " bytes exceeds the limit of " +
+                      std::to_string(limit_bytes) + " bytes");
+  return read_up_to(file, size);
+}
+
+std::string read_file_prefix(const std::string& file, std::uint64_t max_bytes) {
+  return read_up_to(file, std::min(checked_file_size(file), max_bytes));
+}
+
+}  // namespace detail
+
+namespace {
+
+std::string lower(std::string s) {
+  for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+constexpr const char* kSupported =
+    "supported: .pcd, .ply, .xyz, .txt, .csv, .3d (3DTK scan), or a 3DTK scan directory";
+
+// Maps input units and axes to the output frame (metres, right-handed, z up).
+Eigen::Vector3d to_output(const Eigen::Vector3d& p, const LoadOptions& options) {
+  const Eigen::Vector3d m = p * options.unit_m;
+  if (options.up_axis == UpAxis::kY) return {m.x(), -m.z(), m.y()};
+  return m;
+}
+
+void validate(const LoadOptions& options) {
+  if (!(options.unit_m > 0.0) || !std::isfinite(options.unit_m))
+    throw UsageError("LoadOptions::unit_m must be a positive finite number, got " +
+                     std::to_string(options.unit_m));
+}
+
+// Loads one input, appending to result; budget.used counts the points already in result.
+void load_one(const std::string& path, const LoadOptions& options, LoadResult& result) {
+  detail::Budget budget{options.max_points, 0};
+  for (const auto& in : result.inputs) budget.used += in.points_read;
+
+  std::error_code ec;
+  const bool is_dir = fs::is_directory(path, ec);
+  const std::string ext = lower(fs::path(path).extension().string());
+  const bool file_ext = ext == ".pcd" || ext == ".ply" || ext == ".xyz" || ext == ".txt" ||
+                        ext == ".csv" || ext == ".3d";
+
+  auto& points = result.cloud.points;
+  const std::size_t first = points.size();
+  InputReport report;
+  report.path = path;
+  detail::ReadInfo info;
+  if (is_dir && !file_ext) {
+    report.format = "3dtk";
+    info = detail::read_3dtk(path, budget, options, points);
+  } else if (is_dir) {
+    throw InputError(path, "is a directory, expected a file");
+  } else if (ext == ".pcd") {
+    report.format = "pcd";
+    info = detail::read_pcd(path, budget, options, points);
+  } else if (ext == ".ply") {
+    report.format = "ply";
+    info = detail::read_ply(path, budget, points);
+  } else if (ext == ".xyz" || ext == ".txt" || ext == ".csv") {
+    report.format = "xyz";
+    info = detail::read_xyz(path, budget, options, points);
+  } else if (ext == ".3d") {
+    report.format = "3dtk";
+    info = detail::read_3dtk(path, budget, options, points);
+  } else {
+    detail::checked_file_size(path);  // a missing file says so, before the extension
+    throw InputError(path, "unknown file type '" + ext + "' (" + kSupported + ")");
+  }
+
+  // Convert in place and compact away non-finite points (after conversion, so that a finite
+  // input that overflows float is dropped too).
+  std::size_t kept = first;
+  for (std::size_t i = first; i < points.size(); ++i) {
+    Eigen::Vector3f p = points[i];
+    if (!info.output_frame) p = to_output(points[i].cast<double>(), options).cast<float>();
+    if (p.allFinite()) points[kept++] = p;
+  }
+  points.resize(kept);
+
+  report.points_read = info.points;
+  report.points_dropped = info.points - (kept - first);
+  report.scans = info.scans;
+  report.scanner_known = !info.scanners.empty();
+  if (kept == first) {
+    if (info.points == 0) throw InputError(path, "empty cloud: no points");
+    throw InputError(path, "empty cloud: all " + std::to_string(info.points) +
+                               " points are non-finite (NaN / Inf)");
+  }
+  for (const auto& s : info.scanners)
+    result.cloud.scanners.push_back(info.output_frame ? s : to_output(s, options));
+  result.inputs.push_back(std::move(report));
+}
+
+}  // namespace
+
+LoadResult load_clouds(const std::vector<std::string>& paths, const LoadOptions& options) {
+  validate(options);
+  if (paths.empty()) throw UsageError("no input cloud given");
+  LoadResult result;
+  for (const auto& p : paths) load_one(p, options, result);
+  return result;
+}
+
+LoadResult load_cloud(const std::string& path, const LoadOptions& options) {
+  return load_clouds({path}, options);
+}
+
+}  // namespace indoormap::cloud

@@ -1,0 +1,239 @@
+#include "indoormap/cloud/voxel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "indoormap/core/errors.hpp"
+
+namespace indoormap::cloud {
+
+namespace {
+
+// The run of the sorted sample that contains the median, where neighbouring values are never
+// further apart than gap: the main body of the data along one axis.
+std::pair<double, double> gap_limited_range(std::vector<float>& v, double gap) {
+  std::sort(v.begin(), v.end());
+  std::size_t k_lo = v.size() / 2, k_hi = v.size() / 2;
+  while (k_lo > 0 && v[k_lo] - v[k_lo - 1] <= gap) --k_lo;
+  while (k_hi + 1 < v.size() && v[k_hi + 1] - v[k_hi] <= gap) ++k_hi;
+  return {v[k_lo], v[k_hi]};
+}
+
+}  // namespace
+
+Bounds3 robust_bounds(const std::vector<Eigen::Vector3f>& points, const VoxelParams& params) {
+  const std::size_t max_sample = std::max<std::size_t>(1, params.bounds_sample);
+  const double step = std::max(1.0, static_cast<double>(points.size()) / max_sample);
+  std::vector<float> axis[3];
+  for (auto& a : axis) a.reserve(std::min(points.size(), max_sample));
+  for (double i = 0; i < points.size(); i += step) {
+    const auto& p = points[static_cast<std::size_t>(i)];
+    if (!p.allFinite()) continue;
+    for (int d = 0; d < 3; ++d) axis[d].push_back(p[d]);
+  }
+  if (axis[0].empty()) throw InputError("", "the cloud has no finite points");
+
+  Bounds3 core;
+  for (int d = 0; d < 3; ++d) {
+    auto [lo, hi] = gap_limited_range(axis[d], params.bounds_gap_m);
+    core.lo_m[d] = lo;
+    core.hi_m[d] = hi;
+  }
+  // The sample may miss the sparse extremes of the main body (a far wall); take every point
+  // within one gap of the sampled range.
+  Bounds3 b;
+  b.lo_m.setConstant(std::numeric_limits<double>::infinity());
+  b.hi_m.setConstant(-std::numeric_limits<double>::infinity());
+  const Eigen::Vector3f lo = (core.lo_m.array() - params.bounds_gap_m).cast<float>();
+  const Eigen::Vector3f hi = (core.hi_m.array() + params.bounds_gap_m).cast<float>();
+  Eigen::Vector3f mn = b.lo_m.cast<float>(), mx = b.hi_m.cast<float>();
+  for (const auto& p : points) {
+    if ((p.array() >= lo.array()).all() && (p.array() <= hi.array()).all()) {
+      mn = mn.cwiseMin(p);
+      mx = mx.cwiseMax(p);
+    }
+  }
+  b.lo_m = mn.cast<double>();
+  b.hi_m = mx.cast<double>();
+  return b;
+}
+
+VoxelGrid voxelize(const std::vector<Eigen::Vector3f>& points, const Bounds3& bounds,
+                   const VoxelParams& params) {
+  if (!(params.cell_m > 0.0) || !std::isfinite(params.cell_m))
+    throw UsageError("voxel.cell_m must be a positive number of metres");
+  if (!bounds.lo_m.allFinite() || !bounds.hi_m.allFinite() ||
+      (bounds.hi_m.array() < bounds.lo_m.array()).any())
+    throw InputError("", "no points inside the grid bounds");
+  VoxelGrid g;
+  g.cell_m = params.cell_m;
+  // The origin is snapped to the cell size so that grids of overlapping clouds align.
+  std::int64_t dims[3];
+  for (int d = 0; d < 3; ++d) {
+    const double lo = std::floor(bounds.lo_m[d] / params.cell_m) * params.cell_m;
+    const double cells = std::floor((bounds.hi_m[d] - lo) / params.cell_m) + 1.0;
+    if (!(cells <= 1e9))  // also catches NaN
+      throw BudgetError("grid dimension of " + std::to_string(cells) + " cells is too large");
+    g.origin_m[d] = lo;
+    dims[d] = static_cast<std::int64_t>(cells);
+  }
+  g.nx = dims[0];
+  g.ny = dims[1];
+  g.nz = dims[2];
+  const double total = static_cast<double>(g.nx) * static_cast<double>(g.ny) * g.nz;
+  if (total > static_cast<double>(params.max_cells) || g.nx > std::numeric_limits<int>::max() / 2 ||
+      g.ny > std::numeric_limits<int>::max() / 2) {
+    std::ostringstream msg;
+    msg << "the voxel grid would be " << g.nx << " x " << g.ny << " x " << g.nz << " = "
+        << static_cast<std::int64_t>(total) << " cells of " << params.cell_m
+        << " m, above the budget of " << params.max_cells
+        << " cells (voxel.max_cells); raise the budget, use a larger cell_m, or crop the cloud";
+    throw BudgetError(msg.str());
+  }
+  g.counts.assign(static_cast<std::size_t>(total), 0);
+
+  // Hot loop: one multiply-add per axis, a range check that also rejects NaN, one increment.
+  const float inv = static_cast<float>(1.0 / params.cell_m);
+  const float ox = static_cast<float>(g.origin_m.x()), oy = static_cast<float>(g.origin_m.y()),
+              oz = static_cast<float>(g.origin_m.z());
+  const float fnx = static_cast<float>(g.nx), fny = static_cast<float>(g.ny),
+              fnz = static_cast<float>(g.nz);
+  const std::int64_t nx = g.nx, nxy = g.nx * g.ny;
+  std::uint16_t* counts = g.counts.data();
+  std::uint64_t inside = 0;
+  for (const auto& p : points) {
+    const float fx = (p.x() - ox) * inv, fy = (p.y() - oy) * inv, fz = (p.z() - oz) * inv;
+    if (!(fx >= 0.f && fx < fnx && fy >= 0.f && fy < fny && fz >= 0.f && fz < fnz)) continue;
+    const std::int64_t idx = static_cast<std::int64_t>(fz) * nxy +
+                             static_cast<std::int64_t>(fy) * nx + static_cast<std::int64_t>(fx);
+    const std::uint16_t c = counts[idx];
+    counts[idx] = static_cast<std::uint16_t>(c + (c != 0xFFFF));
+    ++inside;
+  }
+  g.points_inside = inside;
+  g.points_outside = points.size() - inside;
+  return g;
+}
+
+namespace {
+
+std::int64_t layer_of(const VoxelGrid& g, double z) {
+  return static_cast<std::int64_t>(std::floor((z - g.origin_m.z()) / g.cell_m));
+}
+
+HeightBand make_band(const VoxelGrid& g, double lo, double hi) {
+  HeightBand b;
+  b.lo_m = lo;
+  b.hi_m = hi;
+  b.lo_layer = std::max<std::int64_t>(0, layer_of(g, lo + 1e-9));
+  b.hi_layer = std::min<std::int64_t>(g.nz - 1, static_cast<std::int64_t>(std::ceil(
+                                                    (hi - g.origin_m.z()) / g.cell_m - 1e-9)) - 1);
+  return b;
+}
+
+std::string fmt_m(double v) {
+  std::ostringstream s;
+  s.precision(3);
+  s << std::fixed << v << " m";
+  return s.str();
+}
+
+}  // namespace
+
+LayerAnalysis analyse_layers(const VoxelGrid& g, const LayerParams& p) {
+  LayerAnalysis a;
+  a.occupied_per_layer.assign(static_cast<std::size_t>(g.nz), 0);
+  const std::int64_t nxy = g.nx * g.ny;
+  const auto min_pts = static_cast<std::uint16_t>(std::clamp(p.min_points_per_voxel, 1, 65535));
+  for (std::int64_t z = 0; z < g.nz; ++z) {
+    const std::uint16_t* layer = g.counts.data() + z * nxy;
+    std::int64_t n = 0;
+    for (std::int64_t i = 0; i < nxy; ++i) n += layer[i] >= min_pts;
+    a.occupied_per_layer[static_cast<std::size_t>(z)] = n;
+  }
+  const auto& h = a.occupied_per_layer;
+  std::int64_t first = -1, last = -1, max_count = 0;
+  for (std::int64_t z = 0; z < g.nz; ++z) {
+    if (h[z] > 0) {
+      if (first < 0) first = z;
+      last = z;
+    }
+    max_count = std::max(max_count, h[z]);
+  }
+  if (first < 0 || last - first < 2)
+    throw InputError("", "all points lie at one height (within " +
+                             fmt_m((std::max<std::int64_t>(last - first, 0) + 1) * g.cell_m) +
+                             "): no floor, furniture and walls to tell apart");
+
+  // Floor: the first strong layer from below, then up to its local peak.
+  if (p.floor_z_m) {
+    a.floor_z_m = *p.floor_z_m;
+    a.floor_layer = std::clamp<std::int64_t>(layer_of(g, a.floor_z_m), 0, g.nz - 1);
+  } else {
+    std::int64_t z = first;
+    while (z < last && static_cast<double>(h[z]) < p.floor_min_fraction * max_count) ++z;
+    while (z < last && h[z + 1] > h[z]) ++z;
+    a.floor_layer = z;
+    a.floor_z_m = g.layer_center_m(z);
+  }
+
+  // Ceiling: the first strong layer from above, then down to its local peak; it must lie at
+  // least min_room_height above the floor.
+  const std::int64_t min_ceiling_layer =
+      a.floor_layer + static_cast<std::int64_t>(std::ceil(p.min_room_height_m / g.cell_m));
+  if (p.ceiling_z_m) {
+    a.ceiling_found = true;
+    a.ceiling_z_m = *p.ceiling_z_m;
+    a.ceiling_layer = std::clamp<std::int64_t>(layer_of(g, a.ceiling_z_m), 0, g.nz - 1);
+  } else {
+    std::int64_t z = last;
+    while (z > min_ceiling_layer && static_cast<double>(h[z]) < p.ceiling_min_fraction * max_count)
+      --z;
+    while (z > min_ceiling_layer && h[z - 1] > h[z]) --z;
+    if (z >= min_ceiling_layer && z <= last &&
+        static_cast<double>(h[z]) >= p.ceiling_min_fraction * max_count) {
+      a.ceiling_found = true;
+      a.ceiling_layer = z;
+      a.ceiling_z_m = g.layer_center_m(z);
+    } else {
+      a.ceiling_found = false;
+      a.ceiling_layer = last;
+      a.ceiling_z_m = g.layer_bottom_m(last + 1);
+      a.warnings.push_back("no ceiling detected; using the top of the data (" +
+                           fmt_m(a.ceiling_z_m) + ") as the ceiling height");
+    }
+  }
+  if (a.ceiling_z_m <= a.floor_z_m)
+    throw UsageError("ceiling height (" + fmt_m(a.ceiling_z_m) + ") is not above the floor (" +
+                     fmt_m(a.floor_z_m) + ")");
+
+  double wall_hi = p.wall_band_hi_m.value_or(a.ceiling_z_m - p.ceiling_clearance_m);
+  double wall_lo = p.wall_band_lo_m.value_or(wall_hi - p.wall_band_m);
+  const double furn_lo = p.furniture_band_lo_m.value_or(a.floor_z_m + p.floor_clearance_m);
+  // A low room (or a low fallback ceiling) must still leave a furniture band of one layer.
+  if (!p.wall_band_lo_m && wall_lo < furn_lo + g.cell_m) {
+    wall_lo = furn_lo + g.cell_m;
+    a.warnings.push_back("room is low: wall band starts at " + fmt_m(wall_lo));
+  }
+  if (wall_hi <= wall_lo) wall_hi = wall_lo + g.cell_m;
+  const double furn_hi = p.furniture_band_hi_m.value_or(wall_lo);
+  a.wall_band = make_band(g, wall_lo, wall_hi);
+  a.furniture_band = make_band(g, furn_lo, furn_hi);
+  return a;
+}
+
+Grid<std::uint8_t> project_band(const VoxelGrid& g, const HeightBand& band, int min_points) {
+  Grid<std::uint8_t> out(static_cast<int>(g.nx), static_cast<int>(g.ny), 0);
+  const auto min_pts = static_cast<std::uint16_t>(std::clamp(min_points, 1, 65535));
+  const std::int64_t nxy = g.nx * g.ny;
+  for (std::int64_t z = std::max<std::int64_t>(band.lo_layer, 0);
+       z <= std::min(band.hi_layer, g.nz - 1); ++z) {
+    const std::uint16_t* layer = g.counts.data() + z * nxy;
+    for (std::int64_t i = 0; i < nxy; ++i) out.data[i] |= layer[i] >= min_pts;
+  }
+  return out;
+}
+
+}  // namespace indoormap::cloud

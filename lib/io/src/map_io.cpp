@@ -1,0 +1,184 @@
+#include "indoormap/io/map_io.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <fstream>
+#include <opencv2/imgcodecs.hpp>
+#include <sstream>
+
+#include "indoormap/core/atomic_file.hpp"
+#include "indoormap/core/errors.hpp"
+
+namespace indoormap::io {
+
+namespace fs = std::filesystem;
+
+void write_pgm(const fs::path& path, const Grid<std::uint8_t>& grid) {
+  std::string bytes = "P5\n" + std::to_string(grid.width) + " " + std::to_string(grid.height) + "\n255\n";
+  const std::size_t header = bytes.size();
+  bytes.resize(header + grid.size());
+  for (int r = 0; r < grid.height; ++r) {
+    const std::size_t dst = header + static_cast<std::size_t>(grid.height - 1 - r) * grid.width;
+    std::copy_n(grid.data.begin() + static_cast<std::ptrdiff_t>(r) * grid.width, grid.width,
+                bytes.begin() + static_cast<std::ptrdiff_t>(dst));
+  }
+  write_file_atomic(path, bytes);
+}
+
+void write_layout_pgm(const fs::path& path, const Grid<Cell>& layout) {
+  Grid<std::uint8_t> raw(layout.width, layout.height);
+  for (std::size_t i = 0; i < raw.size(); ++i) raw.data[i] = static_cast<std::uint8_t>(layout.data[i]);
+  write_pgm(path, raw);
+}
+
+void write_ros_map(const fs::path& dir, const std::string& stem, const Grid<Cell>& layout,
+                   const GridGeometry& geo) {
+  Grid<std::uint8_t> img(layout.width, layout.height);
+  for (std::size_t i = 0; i < img.size(); ++i) {
+    switch (layout.data[i]) {
+      case Cell::kWall:
+      case Cell::kFurniture: img.data[i] = kRosOccupied; break;
+      case Cell::kFree: img.data[i] = kRosFree; break;
+      case Cell::kUnknown: img.data[i] = kRosUnknown; break;
+    }
+  }
+  const RosMapMeta meta;
+  std::ostringstream y;
+  y.precision(10);
+  y << "image: " << stem << ".pgm\n"
+    << "mode: trinary\n"
+    << "resolution: " << geo.cell_m() << "\n"
+    << "origin: [" << geo.origin_m().x() << ", " << geo.origin_m().y() << ", 0.0]\n"
+    << "negate: " << meta.negate << "\n"
+    << "occupied_thresh: " << meta.occupied_thresh << "\n"
+    << "free_thresh: " << meta.free_thresh << "\n";
+  write_pgm(dir / (stem + ".pgm"), img);
+  write_file_atomic(dir / (stem + ".yaml"), y.str());
+}
+
+void write_json(const fs::path& path, const nlohmann::json& j) {
+  write_file_atomic(path, j.dump(2) + "\n");
+}
+
+namespace {
+
+// Image dimensions from the header, read before decoding so that a huge image is refused
+// before anything is allocated for it.
+std::pair<std::int64_t, std::int64_t> image_size(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string(), "cannot open the map image");
+  char head[32] = {};
+  in.read(head, sizeof head);
+  const auto got = in.gcount();
+  if (got >= 24 && static_cast<unsigned char>(head[0]) == 0x89 && head[1] == 'P' && head[2] == 'N' &&
+      head[3] == 'G') {
+    auto be32 = [&](int o) {
+      return (std::int64_t{static_cast<unsigned char>(head[o])} << 24) |
+             (std::int64_t{static_cast<unsigned char>(head[o + 1])} << 16) |
+             (std::int64_t{static_cast<unsigned char>(head[o + 2])} << 8) |
+             std::int64_t{static_cast<unsigned char>(head[o + 3])};
+    };
+    return {be32(16), be32(20)};
+  }
+  if (got >= 2 && head[0] == 'P' && (head[1] == '5' || head[1] == '2')) {
+    in.clear();
+    in.seekg(2);
+    std::int64_t w = -1, h = -1;
+    auto next_int = [&](std::int64_t& v) {
+      for (;;) {
+        int ch = in.peek();
+        if (ch == '#') {
+          std::string skip;
+          std::getline(in, skip);
+        } else if (std::isspace(ch)) {
+          in.get();
+        } else {
+          break;
+        }
+      }
+      in >> v;
+    };
+    next_int(w);
+    next_int(h);
+    if (!in || w <= 0 || h <= 0) throw InputError(path.string(), "malformed PGM header");
+    return {w, h};
+  }
+  throw InputError(path.string(), "map image is neither PGM (P5/P2) nor PNG");
+}
+
+double number_at(const YAML::Node& root, const char* key, const fs::path& file,
+                 std::optional<double> fallback) {
+  const YAML::Node n = root[key];
+  if (!n) {
+    if (fallback) return *fallback;
+    throw InputError(file.string(), std::string("missing key '") + key + "'");
+  }
+  try {
+    return n.as<double>();
+  } catch (const YAML::Exception&) {
+    throw InputError(file.string(), std::string("key '") + key + "' is not a number",
+                     static_cast<std::size_t>(n.Mark().line + 1));
+  }
+}
+
+}  // namespace
+
+RosMap read_ros_map(const fs::path& yaml_path, std::int64_t max_cells) {
+  YAML::Node root;
+  try {
+    std::ifstream in(yaml_path);
+    if (!in) throw InputError(yaml_path.string(), "cannot open the map YAML");
+    root = YAML::Load(in);
+  } catch (const YAML::Exception& e) {
+    throw InputError(yaml_path.string(), "invalid YAML: " + e.msg,
+                     static_cast<std::size_t>(e.mark.line + 1));
+  }
+  if (!root.IsMap()) throw InputError(yaml_path.string(), "the map YAML is not a mapping");
+  RosMap m;
+  if (!root["image"] || !root["image"].IsScalar())
+    throw InputError(yaml_path.string(), "missing key 'image'");
+  m.meta.image = root["image"].as<std::string>();
+  m.meta.resolution_m = number_at(root, "resolution", yaml_path, std::nullopt);
+  if (!(m.meta.resolution_m > 0.0) || !std::isfinite(m.meta.resolution_m))
+    throw InputError(yaml_path.string(), "key 'resolution' must be a positive number");
+  const YAML::Node origin = root["origin"];
+  if (!origin || !origin.IsSequence() || origin.size() != 3)
+    throw InputError(yaml_path.string(), "key 'origin' must be a list [x, y, yaw]");
+  for (int i = 0; i < 3; ++i) {
+    try {
+      m.meta.origin[i] = origin[i].as<double>();
+    } catch (const YAML::Exception&) {
+      throw InputError(yaml_path.string(), "key 'origin' must hold three numbers");
+    }
+  }
+  if (!m.meta.origin.allFinite()) throw InputError(yaml_path.string(), "key 'origin' is not finite");
+  m.meta.negate = static_cast<int>(number_at(root, "negate", yaml_path, 0.0));
+  m.meta.occupied_thresh = number_at(root, "occupied_thresh", yaml_path, 0.65);
+  m.meta.free_thresh = number_at(root, "free_thresh", yaml_path, 0.196);
+
+  fs::path image = m.meta.image;
+  if (image.is_relative()) image = yaml_path.parent_path() / image;
+  const auto [w, h] = image_size(image);
+  if (w * h > max_cells)
+    throw BudgetError(image.string() + ": map of " + std::to_string(w) + " x " + std::to_string(h) +
+                      " cells is above the budget of " + std::to_string(max_cells) + " cells");
+  cv::Mat img = cv::imread(image.string(), cv::IMREAD_GRAYSCALE);
+  if (img.empty() || img.cols != w || img.rows != h)
+    throw InputError(image.string(), "cannot decode the map image");
+
+  m.geometry = GridGeometry({m.meta.origin.x(), m.meta.origin.y()}, m.meta.resolution_m,
+                            static_cast<int>(w), static_cast<int>(h));
+  m.cells = Grid<Cell>(static_cast<int>(w), static_cast<int>(h), Cell::kUnknown);
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) {
+      const double v = img.at<std::uint8_t>(static_cast<int>(h - 1 - r), c);
+      const double p = m.meta.negate ? v / 255.0 : (255.0 - v) / 255.0;
+      m.cells.at(c, r) = p > m.meta.occupied_thresh ? Cell::kWall
+                         : p < m.meta.free_thresh   ? Cell::kFree
+                                                    : Cell::kUnknown;
+    }
+  return m;
+}
+
+}  // namespace indoormap::io

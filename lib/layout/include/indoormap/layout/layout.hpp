@@ -1,0 +1,46 @@
+#pragma once
+// The room layout M_r (paper section 3.2.A, steps 4-6): the passage area from horizontal and
+// vertical passes over the wall map M_w, the free space flood-filled from the scanner position(s)
+// over the furniture map M_f, and the furniture class, joined by a 3x3 cross closing.
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "indoormap/core/cell.hpp"
+#include "indoormap/core/grid.hpp"
+
+namespace indoormap::layout {
+
+struct LayoutParams {
+  int furniture_closing_iterations = 1;  ///< 3x3 cross dilation-erosion chain (0: off)
+  /// Unreachable pockets of the passage area that touch furniture and are at most this large
+  /// become furniture (space behind / between objects); larger ones stay unknown. The paper makes
+  /// every pocket furniture, which turns e.g. the notch of a U-shaped room into one big object.
+  double enclosed_max_area_m2 = 4.0;
+  double seed_search_radius_m = 1.0;  ///< an occupied scanner cell moves to the nearest free one
+};
+
+/// Passage area (step 4): a cell is inside when, in its row and in its column, it lies between
+/// the first and the last obstacle (logical AND of the horizontal and vertical passes).
+/// Obstacle cells themselves are inside. Values: 0 outside, 1 inside.
+Grid<std::uint8_t> passage_area(const Grid<std::uint8_t>& walls);
+
+struct LayoutResult {
+  Grid<Cell> layout;                   ///< M_r
+  Grid<std::uint8_t> passage;          ///< step 4 result (1 = inside)
+  std::vector<CellIndex> seeds;        ///< flood-fill seeds actually used
+  bool seeds_estimated = false;        ///< no scanner position known; seed estimated
+  std::vector<std::string> warnings;
+  std::int64_t cells_wall = 0, cells_furniture = 0, cells_free = 0, cells_unknown = 0;
+};
+
+/// Builds M_r from M_w (walls) and M_f (furniture), both 0/1 grids of the same size, flooding
+/// free space from the scanners (map-frame x, y). With no scanner, the seed is the free cell
+/// farthest from any obstacle inside the passage area, and the result says so.
+LayoutResult build_layout(const Grid<std::uint8_t>& walls, const Grid<std::uint8_t>& furniture,
+                          const GridGeometry& geometry,
+                          const std::vector<Eigen::Vector2d>& scanners_map,
+                          const LayoutParams& params = {});
+
+}  // namespace indoormap::layout

@@ -1,0 +1,210 @@
+#include "indoormap/layout/layout.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <opencv2/imgproc.hpp>
+#include <optional>
+#include <sstream>
+
+#include "indoormap/core/errors.hpp"
+
+namespace indoormap::layout {
+
+namespace {
+
+cv::Mat as_mat(Grid<std::uint8_t>& g) { return cv::Mat(g.height, g.width, CV_8U, g.data.data()); }
+
+constexpr int kDx4[4] = {1, -1, 0, 0};
+constexpr int kDy4[4] = {0, 0, 1, -1};
+
+// Nearest cell with mask != 0 within radius (breadth first, 4-connected), or nullopt.
+std::optional<CellIndex> nearest_set(const Grid<std::uint8_t>& mask, CellIndex start, int radius) {
+  if (!mask.contains(start.col, start.row)) return std::nullopt;
+  if (mask.at(start)) return start;
+  Grid<std::uint8_t> seen(mask.width, mask.height, 0);
+  std::deque<CellIndex> q{start};
+  seen.at(start) = 1;
+  while (!q.empty()) {
+    const CellIndex c = q.front();
+    q.pop_front();
+    for (int k = 0; k < 4; ++k) {
+      const CellIndex n{c.col + kDx4[k], c.row + kDy4[k]};
+      if (!mask.contains(n.col, n.row) || seen.at(n)) continue;
+      if (std::abs(n.col - start.col) > radius || std::abs(n.row - start.row) > radius) continue;
+      if (mask.at(n)) return n;
+      seen.at(n) = 1;
+      q.push_back(n);
+    }
+  }
+  return std::nullopt;
+}
+
+std::string fmt_xy(const Eigen::Vector2d& p) {
+  std::ostringstream s;
+  s.precision(2);
+  s << std::fixed << "(" << p.x() << ", " << p.y() << ")";
+  return s.str();
+}
+
+}  // namespace
+
+Grid<std::uint8_t> passage_area(const Grid<std::uint8_t>& walls) {
+  const int w = walls.width, h = walls.height;
+  Grid<std::uint8_t> horiz(w, h, 0), out(w, h, 0);
+  for (int r = 0; r < h; ++r) {
+    int first = -1, last = -1;
+    for (int c = 0; c < w; ++c)
+      if (walls.at(c, r)) {
+        if (first < 0) first = c;
+        last = c;
+      }
+    for (int c = first; first >= 0 && c <= last; ++c) horiz.at(c, r) = 1;
+  }
+  for (int c = 0; c < w; ++c) {
+    int first = -1, last = -1;
+    for (int r = 0; r < h; ++r)
+      if (walls.at(c, r)) {
+        if (first < 0) first = r;
+        last = r;
+      }
+    for (int r = first; first >= 0 && r <= last; ++r) out.at(c, r) = horiz.at(c, r);
+  }
+  return out;
+}
+
+LayoutResult build_layout(const Grid<std::uint8_t>& walls, const Grid<std::uint8_t>& furniture,
+                          const GridGeometry& geo, const std::vector<Eigen::Vector2d>& scanners_map,
+                          const LayoutParams& params) {
+  if (walls.width != furniture.width || walls.height != furniture.height ||
+      walls.width != geo.width() || walls.height != geo.height())
+    throw Error("build_layout: wall map, furniture map and geometry differ in size");
+  const int w = walls.width, h = walls.height;
+  LayoutResult r;
+  r.layout = Grid<Cell>(w, h, Cell::kUnknown);
+  if (w == 0 || h == 0) {
+    r.warnings.push_back("empty grid: no layout");
+    return r;
+  }
+  r.passage = passage_area(walls);
+
+  Grid<std::uint8_t> passable(w, h, 0);
+  for (std::size_t i = 0; i < passable.size(); ++i)
+    passable.data[i] = r.passage.data[i] && !walls.data[i] && !furniture.data[i];
+
+  // Seeds: the scanner positions, moved to the nearest passable cell when they fall on an object.
+  const int radius = std::max(1, static_cast<int>(std::ceil(params.seed_search_radius_m / geo.cell_m())));
+  for (const auto& s : scanners_map) {
+    const CellIndex c = geo.cell_of(s);
+    if (!geo.contains(c)) {
+      r.warnings.push_back("scanner at " + fmt_xy(s) + " lies outside the map; not used as a seed");
+      continue;
+    }
+    if (auto n = nearest_set(passable, c, radius)) {
+      r.seeds.push_back(*n);
+    } else {
+      r.warnings.push_back("no free cell within " + std::to_string(params.seed_search_radius_m) +
+                           " m of the scanner at " + fmt_xy(s) + "; not used as a seed");
+    }
+  }
+  if (r.seeds.empty()) {
+    // No usable scanner: take the free cell farthest from every obstacle (the middle of the
+    // largest open area), which is where a scanner most likely stood.
+    cv::Mat dist;
+    cv::distanceTransform(as_mat(passable), dist, cv::DIST_L2, cv::DIST_MASK_5);
+    double max_v = 0.0;
+    cv::Point max_p;
+    cv::minMaxLoc(dist, nullptr, &max_v, nullptr, &max_p);
+    if (max_v > 0.0) {
+      r.seeds.push_back({max_p.x, max_p.y});
+      r.seeds_estimated = true;
+      r.warnings.push_back("no scanner position known: estimated at " +
+                           fmt_xy(geo.center_of(r.seeds.back())) +
+                           " (the free cell farthest from obstacles); pass --scanner X,Y,Z to set it");
+    } else {
+      r.warnings.push_back("no free space inside the walls: the layout has no free class");
+    }
+  }
+
+  // Flood fill of free space (4-connected, so diagonal gaps in a wall do not leak).
+  Grid<std::uint8_t> free_mask(w, h, 0);
+  std::deque<CellIndex> q;
+  for (const auto& s : r.seeds)
+    if (!free_mask.at(s)) {
+      free_mask.at(s) = 1;
+      q.push_back(s);
+    }
+  while (!q.empty()) {
+    const CellIndex c = q.front();
+    q.pop_front();
+    for (int k = 0; k < 4; ++k) {
+      const int nc = c.col + kDx4[k], nr = c.row + kDy4[k];
+      if (!passable.contains(nc, nr) || !passable.at(nc, nr) || free_mask.at(nc, nr)) continue;
+      free_mask.at(nc, nr) = 1;
+      q.push_back({nc, nr});
+    }
+  }
+
+  // Furniture: furniture-band obstacles inside the passage area, plus small unreachable pockets
+  // that touch them (behind and between objects).
+  Grid<std::uint8_t> furn(w, h, 0);
+  for (std::size_t i = 0; i < furn.size(); ++i)
+    furn.data[i] = r.passage.data[i] && furniture.data[i] && !walls.data[i];
+  Grid<std::uint8_t> pockets(w, h, 0);
+  for (std::size_t i = 0; i < pockets.size(); ++i)
+    pockets.data[i] = passable.data[i] && !free_mask.data[i];
+  cv::Mat labels, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(as_mat(pockets), labels, stats, centroids, 4, CV_32S);
+  if (n > 1) {
+    const double cell_area = geo.cell_m() * geo.cell_m();
+    std::vector<std::uint8_t> touches(static_cast<std::size_t>(n), 0);
+    for (int row = 0; row < h; ++row)
+      for (int col = 0; col < w; ++col) {
+        const int lab = labels.at<int>(row, col);
+        if (lab == 0 || touches[lab]) continue;
+        for (int dr = -1; dr <= 1 && !touches[lab]; ++dr)
+          for (int dc = -1; dc <= 1; ++dc)
+            if (furn.contains(col + dc, row + dr) && furn.at(col + dc, row + dr)) {
+              touches[lab] = 1;
+              break;
+            }
+      }
+    for (int row = 0; row < h; ++row)
+      for (int col = 0; col < w; ++col) {
+        const int lab = labels.at<int>(row, col);
+        if (lab > 0 && touches[lab] &&
+            stats.at<int>(lab, cv::CC_STAT_AREA) * cell_area <= params.enclosed_max_area_m2)
+          furn.at(col, row) = 1;
+      }
+  }
+  if (params.furniture_closing_iterations > 0) {
+    const cv::Mat cross = cv::getStructuringElement(cv::MORPH_CROSS, {3, 3});
+    cv::Mat closed;
+    cv::morphologyEx(as_mat(furn), closed, cv::MORPH_CLOSE, cross, {-1, -1},
+                     params.furniture_closing_iterations, cv::BORDER_CONSTANT, 0);
+    for (int row = 0; row < h; ++row)
+      for (int col = 0; col < w; ++col)
+        if (closed.at<std::uint8_t>(row, col) && r.passage.at(col, row) && !walls.at(col, row))
+          furn.at(col, row) = 1;
+  }
+
+  for (std::size_t i = 0; i < r.layout.size(); ++i) {
+    Cell c = Cell::kUnknown;
+    if (walls.data[i])
+      c = Cell::kWall;
+    else if (furn.data[i])
+      c = Cell::kFurniture;
+    else if (free_mask.data[i])
+      c = Cell::kFree;
+    r.layout.data[i] = c;
+    switch (c) {
+      case Cell::kWall: ++r.cells_wall; break;
+      case Cell::kFurniture: ++r.cells_furniture; break;
+      case Cell::kFree: ++r.cells_free; break;
+      case Cell::kUnknown: ++r.cells_unknown; break;
+    }
+  }
+  return r;
+}
+
+}  // namespace indoormap::layout

@@ -1,0 +1,55 @@
+#include "indoormap/layout/pipeline.hpp"
+
+#include <chrono>
+
+namespace indoormap::layout {
+
+namespace {
+
+class Stopwatch {
+ public:
+  double lap_ms() {
+    const auto now = std::chrono::steady_clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(now - last_).count();
+    last_ = now;
+    return ms;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
+MapResult make_map(PointCloud cloud, const MapParams& params) {
+  MapResult r;
+  Stopwatch sw;
+  r.level = cloud::estimate_level(cloud.points, params.level);
+  if (r.level.levelled) cloud::rotate(cloud, r.level.map_from_input);
+  else if (params.level.enabled) r.warnings.push_back("not levelled: " + r.level.note);
+  r.timings.push_back({"level", sw.lap_ms()});
+
+  r.bounds = cloud::robust_bounds(cloud.points, params.voxel);
+  r.voxels = cloud::voxelize(cloud.points, r.bounds, params.voxel);
+  r.timings.push_back({"voxelize", sw.lap_ms()});
+
+  r.layers = cloud::analyse_layers(r.voxels, params.layers);
+  for (const auto& w : r.layers.warnings) r.warnings.push_back(w);
+  r.timings.push_back({"layers", sw.lap_ms()});
+
+  r.geometry = r.voxels.geometry2d();
+  r.walls = cloud::project_band(r.voxels, r.layers.wall_band, params.layers.min_points_per_voxel);
+  r.furniture =
+      cloud::project_band(r.voxels, r.layers.furniture_band, params.layers.min_points_per_voxel);
+  r.timings.push_back({"project", sw.lap_ms()});
+
+  std::vector<Eigen::Vector2d> seeds;
+  for (const auto& s : cloud.scanners) seeds.emplace_back(s.x(), s.y());
+  r.layout = build_layout(r.walls, r.furniture, r.geometry, seeds, params.layout);
+  for (const auto& w : r.layout.warnings) r.warnings.push_back(w);
+  r.timings.push_back({"layout", sw.lap_ms()});
+  r.cloud_map = std::move(cloud);
+  return r;
+}
+
+}  // namespace indoormap::layout

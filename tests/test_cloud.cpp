@@ -1,0 +1,284 @@
+// Levelling, voxel grid, robust bounds and layer analysis on small hand-checkable clouds.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <map>
+#include <random>
+
+#include "indoormap/cloud/level.hpp"
+#include "indoormap/cloud/voxel.hpp"
+#include "indoormap/core/errors.hpp"
+
+using namespace indoormap;
+using namespace indoormap::cloud;
+
+namespace {
+
+// A closed box room: floor z=0 and ceiling z=h over [0,w]x[0,d], four walls, points on a grid
+// with small noise. Fixed seed.
+std::vector<Eigen::Vector3f> box_room(double w, double d, double h, double step, double noise,
+                                      bool with_ceiling = true) {
+  std::mt19937 rng(7);
+  std::normal_distribution<double> n(0.0, noise);
+  std::vector<Eigen::Vector3f> pts;
+  for (double x = 0; x <= w; x += step)
+    for (double y = 0; y <= d; y += step) {
+      pts.emplace_back(x, y, n(rng));
+      if (with_ceiling) pts.emplace_back(x, y, h + n(rng));
+    }
+  for (double z = 0; z <= h; z += step) {
+    for (double x = 0; x <= w; x += step) {
+      pts.emplace_back(x, n(rng), z);
+      pts.emplace_back(x, d + n(rng), z);
+    }
+    for (double y = 0; y <= d; y += step) {
+      pts.emplace_back(n(rng), y, z);
+      pts.emplace_back(w + n(rng), y, z);
+    }
+  }
+  return pts;
+}
+
+Eigen::Matrix3d tilt(double deg, Eigen::Vector3d axis) {
+  return Eigen::AngleAxisd(deg * M_PI / 180.0, axis.normalized()).toRotationMatrix();
+}
+
+}  // namespace
+
+TEST(Level, RecoversKnownTilt) {
+  auto pts = box_room(8.0, 6.0, 2.9, 0.05, 0.003);
+  const Eigen::Matrix3d R = tilt(1.3, {1.0, 0.4, 0.0});
+  for (auto& p : pts) p = (R * p.cast<double>()).cast<float>();
+  LevelResult r = estimate_level(pts, {});
+  ASSERT_TRUE(r.levelled) << r.note;
+  EXPECT_TRUE(r.floor.found);
+  EXPECT_TRUE(r.ceiling.found);
+  EXPECT_NEAR(r.tilt_deg, 1.3, 0.05);
+  // The estimated rotation undoes the tilt: the true up vector maps back to z.
+  const Eigen::Vector3d up = r.map_from_input * (R * Eigen::Vector3d::UnitZ());
+  EXPECT_GT(up.z(), std::cos(0.05 * M_PI / 180.0));
+  // After levelling the floor points lie within a few millimetres of one height.
+  PointCloud c{pts, {}};
+  rotate(c, r.map_from_input);
+  double zmin = 1e9, zmax = -1e9;
+  for (const auto& p : c.points)
+    if (p.z() < 1.0 && p.x() > 0.2 && p.x() < 7.8 && p.y() > 0.2 && p.y() < 5.8) {
+      zmin = std::min<double>(zmin, p.z());
+      zmax = std::max<double>(zmax, p.z());
+    }
+  EXPECT_LT(zmax - zmin, 0.03);
+}
+
+TEST(Level, DisabledAndDegenerateInputsLeaveCloudAlone) {
+  auto pts = box_room(4.0, 3.0, 2.5, 0.1, 0.0);
+  LevelParams off;
+  off.enabled = false;
+  EXPECT_FALSE(estimate_level(pts, off).levelled);
+  EXPECT_TRUE(estimate_level(pts, off).map_from_input.isIdentity());
+  EXPECT_FALSE(estimate_level({}, {}).levelled);
+  // Only a vertical wall: no horizontal plane to level by.
+  std::vector<Eigen::Vector3f> wall;
+  for (double x = 0; x < 3; x += 0.05)
+    for (double z = 0; z < 2.5; z += 0.05) wall.emplace_back(x, 0.f, z);
+  LevelResult r = estimate_level(wall, {});
+  EXPECT_FALSE(r.levelled);
+  EXPECT_NE(r.note.find("no near-horizontal"), std::string::npos);
+}
+
+TEST(Level, FloorOnlyWhenNoCeiling) {
+  auto pts = box_room(6.0, 5.0, 2.5, 0.05, 0.002, /*with_ceiling=*/false);
+  const Eigen::Matrix3d R = tilt(2.0, {0.0, 1.0, 0.0});
+  for (auto& p : pts) p = (R * p.cast<double>()).cast<float>();
+  LevelResult r = estimate_level(pts, {});
+  ASSERT_TRUE(r.levelled);
+  EXPECT_TRUE(r.floor.found);
+  EXPECT_FALSE(r.ceiling.found);
+  EXPECT_NEAR(r.tilt_deg, 2.0, 0.05);
+}
+
+TEST(LeastSquaresPlane, ExactPlane) {
+  std::vector<Eigen::Vector3d> pts{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}};
+  PlaneFit f = fit_plane_least_squares(pts);
+  ASSERT_TRUE(f.found);
+  EXPECT_NEAR(f.normal.z(), 1.0, 1e-12);
+  EXPECT_NEAR(f.offset_m, 1.0, 1e-12);
+  EXPECT_NEAR(f.rms_m, 0.0, 1e-12);
+  EXPECT_FALSE(fit_plane_least_squares({{0, 0, 0}, {1, 1, 1}}).found);
+}
+
+TEST(Voxel, CountsMatchHandComputedIndices) {
+  // Cell 1 m, bounds [0,3]^3: points at known cells.
+  std::vector<Eigen::Vector3f> pts{{0.5f, 0.5f, 0.5f}, {0.6f, 0.4f, 0.1f}, {2.5f, 1.5f, 0.5f},
+                                   {2.9f, 2.9f, 2.9f}, {NAN, 1.f, 1.f},    {0.f, 0.f, 0.f}};
+  VoxelParams p;
+  p.cell_m = 1.0;
+  Bounds3 b{{0, 0, 0}, {2.9, 2.9, 2.9}};
+  VoxelGrid g = voxelize(pts, b, p);
+  EXPECT_EQ(g.nx, 3);
+  EXPECT_EQ(g.ny, 3);
+  EXPECT_EQ(g.nz, 3);
+  EXPECT_EQ(g.count(0, 0, 0), 3);
+  EXPECT_EQ(g.count(2, 1, 0), 1);
+  EXPECT_EQ(g.count(2, 2, 2), 1);
+  EXPECT_EQ(g.points_inside, 5u);
+  EXPECT_EQ(g.points_outside, 1u);  // the NaN point
+  long total = 0;
+  for (auto c : g.counts) total += c;
+  EXPECT_EQ(total, 5);
+}
+
+TEST(Voxel, MatchesBruteForceOnRandomCloud) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(-2.f, 5.f);
+  std::vector<Eigen::Vector3f> pts(20000);
+  for (auto& p : pts) p = {u(rng), u(rng), u(rng) * 0.5f};
+  VoxelParams p;
+  p.cell_m = 0.25;
+  VoxelGrid g = voxelize(pts, robust_bounds(pts, p), p);
+  std::map<std::tuple<long, long, long>, int> ref;
+  for (const auto& q : pts)
+    ref[{static_cast<long>(std::floor((q.x() - g.origin_m.x()) / g.cell_m)),
+         static_cast<long>(std::floor((q.y() - g.origin_m.y()) / g.cell_m)),
+         static_cast<long>(std::floor((q.z() - g.origin_m.z()) / g.cell_m))}]++;
+  long occupied = 0;
+  for (auto c : g.counts) occupied += c > 0;
+  EXPECT_EQ(occupied, static_cast<long>(ref.size()));
+  for (const auto& [k, n] : ref) EXPECT_EQ(g.count(std::get<0>(k), std::get<1>(k), std::get<2>(k)), n);
+  EXPECT_EQ(g.points_inside, pts.size());
+}
+
+TEST(Voxel, CountsSaturateInsteadOfWrapping) {
+  std::vector<Eigen::Vector3f> pts(70000, Eigen::Vector3f(0.01f, 0.01f, 0.01f));
+  VoxelParams p;
+  VoxelGrid g = voxelize(pts, {{0, 0, 0}, {0.1, 0.1, 0.1}}, p);
+  EXPECT_EQ(g.count(0, 0, 0), 65535);
+}
+
+TEST(Voxel, RefusesGridAboveBudgetBeforeAllocating) {
+  VoxelParams p;
+  p.max_cells = 1000;
+  std::vector<Eigen::Vector3f> pts{{0, 0, 0}, {10, 10, 10}};
+  try {
+    voxelize(pts, {{0, 0, 0}, {10, 10, 10}}, p);
+    FAIL() << "expected BudgetError";
+  } catch (const BudgetError& e) {
+    EXPECT_NE(std::string(e.what()).find("voxel.max_cells"), std::string::npos) << e.what();
+  }
+  // A grid far beyond memory is refused, not attempted.
+  p.max_cells = 400'000'000;
+  EXPECT_THROW(voxelize(pts, {{-1e6, -1e6, -1e3}, {1e6, 1e6, 1e3}}, p), BudgetError);
+}
+
+TEST(RobustBounds, FarOutlierDoesNotStretchTheGrid) {
+  auto pts = box_room(8.0, 6.0, 2.9, 0.1, 0.0);
+  for (int i = 0; i < 300; ++i) pts.emplace_back(80.f + i * 0.01f, 3.f, 1.f);  // through a window
+  pts.emplace_back(-500.f, 2.f, 1.f);
+  VoxelParams p;
+  Bounds3 b = robust_bounds(pts, p);
+  EXPECT_NEAR(b.lo_m.x(), 0.0, 1e-6);
+  EXPECT_NEAR(b.hi_m.x(), 8.0, 0.11);
+  EXPECT_NEAR(b.hi_m.y(), 6.0, 0.11);
+  EXPECT_NEAR(b.hi_m.z(), 2.9, 0.11);
+  VoxelGrid g = voxelize(pts, b, p);
+  EXPECT_EQ(g.points_outside, 301u);
+}
+
+namespace {
+// A voxel grid of a 1 m cell room drawn by hand: floor layer 1 full, walls on the border of
+// layers 1..6, ceiling layer 6 full, a desk top at layer 3.
+VoxelGrid hand_grid(bool ceiling) {
+  VoxelGrid g;
+  g.cell_m = 0.5;
+  g.nx = 10;
+  g.ny = 8;
+  g.nz = 8;
+  g.counts.assign(g.nx * g.ny * g.nz, 0);
+  auto set = [&](int x, int y, int z) { g.counts[(z * g.ny + y) * g.nx + x] = 5; };
+  for (int x = 0; x < 10; ++x)
+    for (int y = 0; y < 8; ++y) {
+      set(x, y, 1);
+      if (ceiling) set(x, y, 6);
+      const bool border = x == 0 || y == 0 || x == 9 || y == 7;
+      for (int z = 1; z <= 6 && border; ++z) set(x, y, z);
+    }
+  for (int x = 3; x < 6; ++x) set(x, 3, 3);
+  return g;
+}
+}  // namespace
+
+TEST(Layers, FindsFloorCeilingAndBands) {
+  LayerParams p;
+  p.min_room_height_m = 1.5;
+  p.floor_clearance_m = 0.3;
+  p.ceiling_clearance_m = 0.3;
+  p.wall_band_m = 0.5;
+  LayerAnalysis a = analyse_layers(hand_grid(true), p);
+  EXPECT_EQ(a.occupied_per_layer[1], 80);
+  EXPECT_EQ(a.occupied_per_layer[3], 32 + 3);
+  EXPECT_EQ(a.floor_layer, 1);
+  EXPECT_DOUBLE_EQ(a.floor_z_m, 0.75);
+  EXPECT_TRUE(a.ceiling_found);
+  EXPECT_EQ(a.ceiling_layer, 6);
+  EXPECT_DOUBLE_EQ(a.ceiling_z_m, 3.25);
+  // Wall band [2.45, 2.95] -> layers 4..5; furniture band [1.05, 2.45) -> layers 2..4.
+  EXPECT_EQ(a.wall_band.lo_layer, 4);
+  EXPECT_EQ(a.wall_band.hi_layer, 5);
+  EXPECT_EQ(a.furniture_band.lo_layer, 2);
+  EXPECT_EQ(a.furniture_band.hi_layer, 4);
+  EXPECT_TRUE(a.warnings.empty());
+}
+
+TEST(Layers, NoCeilingFallsBackToTopOfDataWithWarning) {
+  LayerParams p;
+  p.min_room_height_m = 1.5;
+  p.ceiling_min_fraction = 0.5;  // the tiny room's wall ring is 40 % of its floor
+  LayerAnalysis a = analyse_layers(hand_grid(false), p);
+  EXPECT_FALSE(a.ceiling_found);
+  EXPECT_EQ(a.ceiling_layer, 6);
+  EXPECT_DOUBLE_EQ(a.ceiling_z_m, 3.5);
+  ASSERT_FALSE(a.warnings.empty());
+  EXPECT_NE(a.warnings[0].find("no ceiling"), std::string::npos);
+}
+
+TEST(Layers, OverridesWin) {
+  LayerParams p;
+  p.floor_z_m = 0.6;
+  p.ceiling_z_m = 3.0;
+  p.wall_band_lo_m = 2.0;
+  p.wall_band_hi_m = 2.5;
+  LayerAnalysis a = analyse_layers(hand_grid(true), p);
+  EXPECT_DOUBLE_EQ(a.floor_z_m, 0.6);
+  EXPECT_DOUBLE_EQ(a.ceiling_z_m, 3.0);
+  EXPECT_EQ(a.wall_band.lo_layer, 4);
+  EXPECT_EQ(a.wall_band.hi_layer, 4);
+}
+
+TEST(Layers, AllPointsAtOneHeightIsAnInputError) {
+  VoxelGrid g;
+  g.cell_m = 0.05;
+  g.nx = g.ny = 4;
+  g.nz = 3;
+  g.counts.assign(48, 0);
+  g.counts[16] = 1;  // one layer only
+  try {
+    analyse_layers(g, {});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("one height"), std::string::npos);
+  }
+}
+
+TEST(Layers, ProjectBandIsColumnOr) {
+  VoxelGrid g = hand_grid(true);
+  HeightBand b;
+  b.lo_layer = 3;
+  b.hi_layer = 3;
+  Grid<std::uint8_t> m = project_band(g, b, 1);
+  int n = 0;
+  for (auto v : m.data) n += v;
+  EXPECT_EQ(n, 32 + 3);
+  EXPECT_EQ(m.at(4, 3), 1);
+  EXPECT_EQ(m.at(4, 4), 0);
+  EXPECT_EQ(project_band(g, b, 6).data, std::vector<std::uint8_t>(80, 0));  // min points
+}

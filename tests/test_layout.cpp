@@ -1,0 +1,217 @@
+// Room layout M_r on small hand-drawn grids: passage area, flood fill, furniture, closing.
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "indoormap/layout/layout.hpp"
+
+using namespace indoormap;
+using namespace indoormap::layout;
+
+namespace {
+
+// Parses a picture: '#' = 1, anything else 0. The first text line is the TOP row (highest y),
+// as printed; grid row 0 is the bottom line.
+Grid<std::uint8_t> parse(const std::vector<std::string>& rows, char mark = '#') {
+  const int h = static_cast<int>(rows.size()), w = static_cast<int>(rows[0].size());
+  Grid<std::uint8_t> g(w, h, 0);
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) g.at(c, h - 1 - r) = rows[r][c] == mark;
+  return g;
+}
+
+std::string render(const Grid<Cell>& g) {
+  std::string s;
+  for (int r = g.height - 1; r >= 0; --r) {
+    for (int c = 0; c < g.width; ++c) s += " WF."[static_cast<int>(g.at(c, r))];
+    s += '\n';
+  }
+  return s;
+}
+
+GridGeometry geo_for(const Grid<std::uint8_t>& g) { return GridGeometry({0.0, 0.0}, 1.0, g.width, g.height); }
+
+}  // namespace
+
+TEST(PassageArea, SquareRingAndLShape) {
+  auto walls = parse({
+      "..........",
+      ".#####....",
+      ".#...#....",
+      ".#...####.",
+      ".#......#.",
+      ".########.",
+      "..........",
+  });
+  auto p = passage_area(walls);
+  // Inside: the walls and everything they enclose; the L's notch (top right) and the margin not.
+  auto expected = parse({
+      "..........",
+      ".#####....",
+      ".#####....",
+      ".########.",
+      ".########.",
+      ".########.",
+      "..........",
+  });
+  EXPECT_EQ(p.data, expected.data);
+}
+
+TEST(Layout, RoomWithFurnitureAndScanner) {
+  auto walls = parse({
+      "############",
+      "#..........#",
+      "#..........#",
+      "#..........#",
+      "#..........#",
+      "#..........#",
+      "############",
+  });
+  auto furn = parse({
+      "............",
+      ".FFF........",
+      ".FFF........",
+      "............",
+      "......FF....",
+      "......FF....",
+      "............",
+  }, 'F');
+  const std::vector<Eigen::Vector2d> scanner{{9.5, 3.5}};
+  LayoutResult r = build_layout(walls, furn, geo_for(walls), scanner);
+  EXPECT_EQ(render(r.layout),
+            "WWWWWWWWWWWW\n"
+            "WFFF.......W\n"
+            "WFFF.......W\n"
+            "W..........W\n"
+            "W.....FF...W\n"
+            "W.....FF...W\n"
+            "WWWWWWWWWWWW\n");
+  EXPECT_EQ(r.cells_wall, 34);
+  EXPECT_EQ(r.cells_furniture, 10);
+  EXPECT_EQ(r.cells_free, 40);
+  EXPECT_EQ(r.cells_unknown, 0);
+  EXPECT_FALSE(r.seeds_estimated);
+  ASSERT_EQ(r.seeds.size(), 1u);
+  EXPECT_EQ(r.seeds[0], (CellIndex{9, 3}));
+}
+
+TEST(Layout, ClosingJoinsFragmentsAndPocketsBehindObjectsAreFurniture) {
+  auto walls = parse({
+      "###########",
+      "#.........#",
+      "#.........#",
+      "#.........#",
+      "#.........#",
+      "#.........#",
+      "#.........#",
+      "###########",
+  });
+  // Two fragments of one desk, one cell apart: the 3x3 cross closing joins them through their
+  // middle row. The cell enclosed between the cabinet and the wall corner is a pocket.
+  auto furn = parse({
+      "...........",
+      "...........",
+      ".....FF.FF.",
+      ".....FF.FF.",
+      ".....FF.FF.",
+      ".FF........",
+      "..F........",
+      "...........",
+  }, 'F');
+  LayoutResult r = build_layout(walls, furn, geo_for(walls), {{2.5, 5.5}});
+  EXPECT_EQ(render(r.layout),
+            "WWWWWWWWWWW\n"
+            "W.........W\n"
+            "W....FF.FFW\n"
+            "W....FFFFFW\n"
+            "W....FF.FFW\n"
+            "WFF.......W\n"
+            "WFF.......W\n"
+            "WWWWWWWWWWW\n");
+  LayoutParams no_closing;
+  no_closing.furniture_closing_iterations = 0;
+  r = build_layout(walls, furn, geo_for(walls), {{2.5, 5.5}}, no_closing);
+  EXPECT_EQ(r.layout.at(7, 4), Cell::kFree);  // without the closing the fragments stay apart
+  EXPECT_EQ(r.layout.at(1, 1), Cell::kFurniture);  // the corner pocket is furniture either way
+}
+
+TEST(Layout, LargeUnreachableRegionStaysUnknown) {
+  // Two rooms sharing a wall; the scanner stands in the left one. The right room is not reachable
+  // and far larger than a pocket behind furniture, so it must not become one big object.
+  auto walls = parse({
+      "#################",
+      "#.......#.......#",
+      "#.......#.......#",
+      "#.......#.......#",
+      "#################",
+  });
+  Grid<std::uint8_t> furn(walls.width, walls.height, 0);
+  furn.at(9, 2) = 1;
+  LayoutParams p;
+  p.enclosed_max_area_m2 = 4.0;
+  LayoutResult r = build_layout(walls, furn, geo_for(walls), {{2.5, 2.5}}, p);
+  EXPECT_EQ(r.layout.at(3, 2), Cell::kFree);
+  EXPECT_EQ(r.layout.at(12, 2), Cell::kUnknown);
+  EXPECT_EQ(r.layout.at(9, 2), Cell::kFurniture);
+}
+
+TEST(Layout, ScannerOnAnObjectMovesToTheNearestFreeCell) {
+  auto walls = parse({"#######", "#.....#", "#.....#", "#.....#", "#######"});
+  Grid<std::uint8_t> furn(7, 5, 0);
+  furn.at(3, 2) = 1;
+  LayoutResult r = build_layout(walls, furn, geo_for(walls), {{3.5, 2.5}});
+  ASSERT_EQ(r.seeds.size(), 1u);
+  EXPECT_EQ(r.layout.at(r.seeds[0]), Cell::kFree);
+  EXPECT_EQ(std::abs(r.seeds[0].col - 3) + std::abs(r.seeds[0].row - 2), 1);
+}
+
+TEST(Layout, NoScannerEstimatesTheSeedAndSaysSo) {
+  auto walls = parse({"#########", "#.......#", "#.......#", "#.......#", "#.......#", "#########"});
+  Grid<std::uint8_t> furn(9, 6, 0);
+  LayoutResult r = build_layout(walls, furn, geo_for(walls), {});
+  EXPECT_TRUE(r.seeds_estimated);
+  ASSERT_FALSE(r.warnings.empty());
+  EXPECT_NE(r.warnings[0].find("no scanner position known"), std::string::npos);
+  EXPECT_EQ(r.cells_free, 28);
+  // A scanner outside the map is reported and an estimate is used instead.
+  r = build_layout(walls, furn, geo_for(walls), {{100.0, 100.0}});
+  EXPECT_TRUE(r.seeds_estimated);
+  EXPECT_NE(r.warnings[0].find("outside the map"), std::string::npos);
+}
+
+TEST(Layout, EmptyGridIsAnEmptyResultNotACrash) {
+  Grid<std::uint8_t> empty;
+  LayoutResult r = build_layout(empty, empty, GridGeometry({0, 0}, 0.05, 0, 0), {});
+  EXPECT_EQ(r.layout.size(), 0u);
+  EXPECT_FALSE(r.warnings.empty());
+}
+
+TEST(Layout, FreeSpaceEqualsOpenCvFloodFillOnRandomMaps) {
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 50; ++trial) {
+    const int w = 40, h = 30;
+    Grid<std::uint8_t> walls(w, h, 0), furn(w, h, 0);
+    for (int c = 0; c < w; ++c) walls.at(c, 0) = walls.at(c, h - 1) = 1;
+    for (int r = 0; r < h; ++r) walls.at(0, r) = walls.at(w - 1, r) = 1;
+    std::bernoulli_distribution obstacle(0.25);
+    for (int r = 1; r < h - 1; ++r)
+      for (int c = 1; c < w - 1; ++c) furn.at(c, r) = obstacle(rng);
+    furn.at(20, 15) = 0;
+    LayoutParams p;
+    p.furniture_closing_iterations = 0;
+    p.enclosed_max_area_m2 = 0.0;
+    LayoutResult res = build_layout(walls, furn, geo_for(walls), {{20.5, 15.5}}, p);
+    // Reference: OpenCV 4-connected flood fill over the passable cells.
+    cv::Mat pass(h, w, CV_8U, cv::Scalar(0));
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w; ++c) pass.at<std::uint8_t>(r, c) = !walls.at(c, r) && !furn.at(c, r) ? 1 : 0;
+    cv::floodFill(pass, cv::Point(20, 15), cv::Scalar(2), nullptr, cv::Scalar(0), cv::Scalar(0), 4);
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w; ++c)
+        ASSERT_EQ(res.layout.at(c, r) == Cell::kFree, pass.at<std::uint8_t>(r, c) == 2)
+            << "trial " << trial << " cell " << c << "," << r;
+  }
+}
