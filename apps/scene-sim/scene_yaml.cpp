@@ -329,6 +329,7 @@ sim::Scene parse_scene_file(const std::string& file, const sim::ScannerParams& b
 
 std::string config_to_yaml(const Config& c) {
   YAML::Emitter e;
+  e.SetDoublePrecision(15);
   e << YAML::BeginMap;
   e << YAML::Key << "scanner" << YAML::Value << YAML::BeginMap;
   e << YAML::Key << "azimuth_step_deg" << YAML::Value << c.scanner.azimuth_step_deg;
