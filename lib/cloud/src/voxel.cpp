@@ -11,14 +11,37 @@ namespace indoormap::cloud {
 
 namespace {
 
-// The run of the sorted sample that contains the median, where neighbouring values are never
-// further apart than gap: the main body of the data along one axis.
+// The main body of the data along one axis: from the sample's median outward until an empty gap
+// of at least `gap` (two empty bins of gap/2). Linear time: a histogram instead of a sort. The
+// walk stops at max_extent from the median, which bounds the histogram.
 std::pair<double, double> gap_limited_range(std::vector<float>& v, double gap) {
-  std::sort(v.begin(), v.end());
-  std::size_t k_lo = v.size() / 2, k_hi = v.size() / 2;
-  while (k_lo > 0 && v[k_lo] - v[k_lo - 1] <= gap) --k_lo;
-  while (k_hi + 1 < v.size() && v[k_hi + 1] - v[k_hi] <= gap) ++k_hi;
-  return {v[k_lo], v[k_hi]};
+  constexpr double kMaxExtent = 5000.0;  // metres from the median; far beyond any building
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  const double median = *mid;
+  const double bin = gap / 2.0;
+  const auto half = static_cast<std::int64_t>(std::ceil(kMaxExtent / bin));
+  std::vector<std::uint32_t> hist(static_cast<std::size_t>(2 * half + 1), 0);
+  for (float x : v) {
+    const double k = std::floor((x - median) / bin);
+    if (k >= -half && k <= half) ++hist[static_cast<std::size_t>(k + half)];
+  }
+  auto walk = [&](std::int64_t step) {
+    std::int64_t k = half, last = half;
+    int empty = 0;
+    while (k + step >= 0 && k + step <= 2 * half && empty < 2) {
+      k += step;
+      if (hist[static_cast<std::size_t>(k)]) {
+        last = k;
+        empty = 0;
+      } else {
+        ++empty;
+      }
+    }
+    return last;
+  };
+  const std::int64_t lo = walk(-1), hi = walk(+1);
+  return {median + static_cast<double>(lo - half) * bin, median + static_cast<double>(hi - half + 1) * bin};
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ struct VoxelParams {
   double cell_m = 0.05;                    ///< voxel edge
   std::int64_t max_cells = 400'000'000;    ///< refuse larger grids before allocating (2 B/cell)
   double bounds_gap_m = 1.0;               ///< robust bounds stop at an empty gap this wide
-  std::size_t bounds_sample = 262144;      ///< points sampled for the gap search
+  std::size_t bounds_sample = 65536;       ///< points sampled for the gap search
 };
 
 /// Dense voxel grid, layers contiguous: index = (iz * ny + iy) * nx + ix. Counts saturate.
