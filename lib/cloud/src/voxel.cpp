@@ -247,15 +247,30 @@ LayerAnalysis analyse_layers(const VoxelGrid& g, const LayerParams& p) {
   return a;
 }
 
-Grid<std::uint8_t> project_band(const VoxelGrid& g, const HeightBand& band, int min_points) {
-  Grid<std::uint8_t> out(static_cast<int>(g.nx), static_cast<int>(g.ny), 0);
+Grid<std::uint8_t> project_band(const VoxelGrid& g, const HeightBand& band, int min_points,
+                                int isolated_min_points) {
+  const int w = static_cast<int>(g.nx), h = static_cast<int>(g.ny);
+  Grid<std::uint32_t> sum(w, h, 0);
   const auto min_pts = static_cast<std::uint16_t>(std::clamp(min_points, 1, 65535));
   const std::int64_t nxy = g.nx * g.ny;
   for (std::int64_t z = std::max<std::int64_t>(band.lo_layer, 0);
        z <= std::min(band.hi_layer, g.nz - 1); ++z) {
     const std::uint16_t* layer = g.counts.data() + z * nxy;
-    for (std::int64_t i = 0; i < nxy; ++i) out.data[i] |= layer[i] >= min_pts;
+    for (std::int64_t i = 0; i < nxy; ++i)
+      if (layer[i] >= min_pts) sum.data[i] += layer[i];
   }
+  Grid<std::uint8_t> out(w, h, 0);
+  const auto isolated_min = static_cast<std::uint32_t>(std::max(isolated_min_points, 1));
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) {
+      const std::uint32_t n = sum.at(c, r);
+      if (n == 0) continue;
+      bool ok = n >= isolated_min;
+      for (int dr = -1; dr <= 1 && !ok; ++dr)
+        for (int dc = -1; dc <= 1 && !ok; ++dc)
+          ok = (dr || dc) && sum.contains(c + dc, r + dr) && sum.at(c + dc, r + dr) > 0;
+      out.at(c, r) = ok;
+    }
   return out;
 }
 
