@@ -15,6 +15,16 @@ using namespace indoormap::objects;
 
 namespace {
 
+// Floor at layer 0, ceiling far above, wall band out of reach: heights as drawn.
+cloud::LayerAnalysis flat_layers() {
+  cloud::LayerAnalysis a;
+  a.floor_layer = 0;
+  a.ceiling_layer = 1000;
+  a.wall_band.lo_layer = 999;
+  a.wall_band.hi_layer = 1000;
+  return a;
+}
+
 // Voxel grid of w x h columns, cell 0.05 m, floor layer 0 (z in [0, 0.05)), nz layers.
 cloud::VoxelGrid voxels(int w, int h, int nz) {
   cloud::VoxelGrid g;
@@ -99,7 +109,7 @@ TEST(Objects, GeometryHeightsAndWallContactOnAHandMadeRoom) {
   const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
   ObjectParams p;
   p.min_area_m2 = 0.0;
-  ObjectsResult res = extract_objects(L, geo, g, /*floor_layer=*/0, p);
+  ObjectsResult res = extract_objects(L, geo, g, flat_layers(), p);
   ASSERT_EQ(res.objects.size(), 2u);
   const auto& table = res.objects[0];  // raster order: row 2 comes first
   const auto& cabinet = res.objects[1];
@@ -144,12 +154,12 @@ TEST(Objects, TouchingObjectsOfDifferentHeightsAreSplit) {
   const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
   ObjectParams p;
   p.min_area_m2 = 0.0;
-  auto res = extract_objects(L, geo, g, 0, p);
+  auto res = extract_objects(L, geo, g, flat_layers(), p);
   ASSERT_EQ(res.objects.size(), 2u);
   EXPECT_NEAR(res.objects[0].z_max_m, 0.725, 1e-9);
   EXPECT_NEAR(res.objects[1].z_max_m, 0.425, 1e-9);
   p.split_height_step_m = 0.0;  // the paper's plain 2D labelling
-  EXPECT_EQ(extract_objects(L, geo, g, 0, p).objects.size(), 1u);
+  EXPECT_EQ(extract_objects(L, geo, g, flat_layers(), p).objects.size(), 1u);
 }
 
 TEST(Objects, RotatedRectangleGivesItsOrientedBox) {
@@ -167,7 +177,7 @@ TEST(Objects, RotatedRectangleGivesItsOrientedBox) {
         fill_column(g, c, r, 0.0, 0.5);
       }
     }
-  auto res = extract_objects(L, geo, g, 0, {});
+  auto res = extract_objects(L, geo, g, flat_layers(), {});
   ASSERT_EQ(res.objects.size(), 1u);
   const auto& b = res.objects[0].box;
   EXPECT_NEAR(b.angle_deg, 30.0, 3.0);
@@ -181,13 +191,13 @@ TEST(Objects, NoFurnitureIsAnEmptyListAndSmallObjectsAreDropped) {
   Grid<Cell> L(5, 5, Cell::kFree);
   auto g = voxels(5, 5, 10);
   const GridGeometry geo({0.0, 0.0}, 0.05, 5, 5);
-  EXPECT_TRUE(extract_objects(L, geo, g, 0, {}).objects.empty());
+  EXPECT_TRUE(extract_objects(L, geo, g, flat_layers(), {}).objects.empty());
   L.at(2, 2) = Cell::kFurniture;  // 0.0025 m2 < the default minimum area
-  auto res = extract_objects(L, geo, g, 0, {});
+  auto res = extract_objects(L, geo, g, flat_layers(), {});
   EXPECT_TRUE(res.objects.empty());
   EXPECT_EQ(res.labels.at(2, 2), 0);
-  EXPECT_TRUE(extract_objects(Grid<Cell>(), GridGeometry({0, 0}, 0.05, 0, 0), voxels(0, 0, 0), 0, {}).objects.empty());
-  EXPECT_THROW(extract_objects(L, GridGeometry({0, 0}, 0.05, 4, 4), g, 0, {}), Error);
+  EXPECT_TRUE(extract_objects(Grid<Cell>(), GridGeometry({0, 0}, 0.05, 0, 0), voxels(0, 0, 0), flat_layers(), {}).objects.empty());
+  EXPECT_THROW(extract_objects(L, GridGeometry({0, 0}, 0.05, 4, 4), g, flat_layers(), {}), Error);
 }
 
 TEST(Objects, CropHoldsExactlyThePointsOfTheRegion) {
@@ -202,7 +212,7 @@ TEST(Objects, CropHoldsExactlyThePointsOfTheRegion) {
     }
   ObjectParams p;
   p.min_area_m2 = 0.0;
-  auto res = extract_objects(L, geo, g, 0, p);
+  auto res = extract_objects(L, geo, g, flat_layers(), p);
   ASSERT_EQ(res.objects.size(), 1u);
   const auto& o = res.objects[0];
   std::mt19937 rng(4);
@@ -224,4 +234,81 @@ TEST(Objects, CropHoldsExactlyThePointsOfTheRegion) {
   }
   EXPECT_EQ(std::set<std::size_t>(crops[0].begin(), crops[0].end()), expected);
   EXPECT_GT(expected.size(), 100u);
+}
+
+// ---- Accuracy on simulated scenes (issue 4 acceptance) ------------------------------------------
+
+#include <algorithm>
+
+#include "indoormap/cloud/level.hpp"
+#include "indoormap/layout/pipeline.hpp"
+#include "indoormap/sim/eval.hpp"
+#include "indoormap/sim/ground_truth.hpp"
+#include "indoormap/sim/random_scene.hpp"
+#include "indoormap/sim/simulate.hpp"
+
+namespace {
+
+struct SceneScore {
+  int truth = 0, result = 0, matched_truth = 0, matched_result = 0;
+  std::vector<double> height_errors_m;
+};
+
+// Objects of at least min_area_m2 on both sides: recall counts truth items matched by any result
+// object, precision counts result objects matched by any truth item (footprint IoU >= 0.5).
+SceneScore score_scene(std::uint64_t seed, double min_area_m2) {
+  sim::RandomSceneParams rp;
+  rp.rooms = 1;
+  const sim::Scene scene = sim::normalised(sim::random_scene(seed, rp));
+  const sim::SimResult s = sim::simulate(scene);
+  PointCloud cloud{s.points, s.scanner_positions_m};
+  const layout::MapResult m = layout::make_map(std::move(cloud), {});
+  const auto objs = objects::extract_objects(m.layout.layout, m.geometry, m.voxels, m.layers, {});
+  std::vector<sim::EvalObject> truth, result;
+  for (const auto& t : sim::furniture_truth(scene)) {
+    if (!t.on_floor || std::abs(sim::signed_area(t.footprint)) < min_area_m2) continue;
+    truth.push_back({t.id, "", t.footprint, t.z_min_m, t.z_max_m, true});
+  }
+  for (const auto& o : objs.objects) {
+    if (o.area_m2 < min_area_m2) continue;
+    sim::EvalObject e{std::to_string(o.id), "", o.footprint_m, std::nullopt, std::nullopt, true};
+    if (o.has_height) {
+      e.z_min_m = o.z_min_m;
+      e.z_max_m = o.z_max_m;
+    }
+    result.push_back(e);
+  }
+  const sim::ObjectScores sc = sim::evaluate_objects(truth, result, 0.5);
+  SceneScore r;
+  r.truth = sc.truth_count;
+  r.result = sc.result_count;
+  r.matched_truth = r.matched_result = sc.matched;
+  for (const auto& mt : sc.matches)
+    if (mt.z_max_error_m) r.height_errors_m.push_back(std::abs(*mt.z_max_error_m));
+  return r;
+}
+
+}  // namespace
+
+TEST(ObjectsAccuracy, TwentySimulatedScenes) {
+  int truth = 0, result = 0, matched = 0;
+  std::vector<double> errors;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const SceneScore s = score_scene(seed, 0.1);
+    truth += s.truth;
+    result += s.result;
+    matched += s.matched_truth;
+    errors.insert(errors.end(), s.height_errors_m.begin(), s.height_errors_m.end());
+    std::printf("scene %2llu: truth %2d result %2d matched %2d\n", static_cast<unsigned long long>(seed), s.truth,
+                s.result, s.matched_truth);
+  }
+  ASSERT_GT(truth, 100);
+  const double recall = static_cast<double>(matched) / truth, precision = static_cast<double>(matched) / result;
+  std::sort(errors.begin(), errors.end());
+  const double median = errors.empty() ? 1e9 : errors[errors.size() / 2];
+  std::printf("objects >= 0.1 m2 in 20 scenes: truth %d, result %d, matched %d, recall %.3f, precision %.3f, "
+              "median |z_max error| %.3f m\n", truth, result, matched, recall, precision, median);
+  EXPECT_GE(recall, 0.9);
+  EXPECT_GE(precision, 0.9);
+  EXPECT_LE(median, 0.05);
 }

@@ -46,9 +46,11 @@ void visit(PipelineConfig& c, F&& f) {
   f("layers", "floor_min_fraction", ly.floor_min_fraction);
   f("layers", "ceiling_min_fraction", ly.ceiling_min_fraction);
   f("layers", "min_room_height_m", ly.min_room_height_m);
+  f("layers", "ceiling_onset_factor", ly.ceiling_onset_factor);
   f("layers", "floor_clearance_m", ly.floor_clearance_m);
   f("layers", "ceiling_clearance_m", ly.ceiling_clearance_m);
   f("layers", "wall_band_m", ly.wall_band_m);
+  f("layers", "furniture_max_height_m", ly.furniture_max_height_m);
   f("layers", "floor_z_m", ly.floor_z_m);
   f("layers", "ceiling_z_m", ly.ceiling_z_m);
   f("layers", "wall_band_lo_m", ly.wall_band_lo_m);
@@ -60,8 +62,15 @@ void visit(PipelineConfig& c, F&& f) {
   f("layout", "enclosed_max_area_m2", lo.enclosed_max_area_m2);
   f("layout", "seed_search_radius_m", lo.seed_search_radius_m);
   f("layout", "hanging_max_area_m2", lo.hanging_max_area_m2);
+  f("layout", "hanging_max_extent_m", lo.hanging_max_extent_m);
   f("layout", "hanging_max_support", lo.hanging_max_support);
   f("layout", "hanging_gap_m", lo.hanging_gap_m);
+  auto& ob = c.objects;
+  f("objects", "min_area_m2", ob.min_area_m2);
+  f("objects", "connectivity", ob.connectivity);
+  f("objects", "crop_margin_m", ob.crop_margin_m);
+  f("objects", "split_height_step_m", ob.split_height_step_m);
+  f("objects", "max_vertical_gap_m", ob.max_vertical_gap_m);
 }
 
 std::string axis_name(cloud::UpAxis a) { return a == cloud::UpAxis::kY ? "y" : "z"; }
@@ -82,7 +91,11 @@ struct Reader {
     if (!n) return;
     const std::string full = std::string(section) + "." + key;
     try {
-      if constexpr (std::is_same_v<T, cloud::UpAxis>) {
+      if constexpr (std::is_same_v<T, objects::Connectivity>) {
+        const auto k = n.as<int>();
+        if (k != 4 && k != 8) fail(full, n, "expected 4 or 8");
+        v = k == 4 ? objects::Connectivity::k4 : objects::Connectivity::k8;
+      } else if constexpr (std::is_same_v<T, cloud::UpAxis>) {
         const auto s = n.as<std::string>();
         if (s == "z") v = cloud::UpAxis::kZ;
         else if (s == "y") v = cloud::UpAxis::kY;
@@ -135,7 +148,7 @@ void merge_config_file(PipelineConfig& config, const std::string& path) {
     const auto name = sec.first.as<std::string>();
     const auto it = known.find(name);
     if (it == known.end())
-      throw InputError(path, "unknown section '" + name + "' (sections: input, level, voxel, layers, layout)",
+      throw InputError(path, "unknown section '" + name + "' (sections: input, level, voxel, layers, layout, objects)",
                        static_cast<std::size_t>(sec.first.Mark().line + 1));
     if (sec.second.IsNull()) continue;
     if (!sec.second.IsMap())
@@ -180,6 +193,8 @@ void validate(const PipelineConfig& c) {
   require(ly.ceiling_min_fraction > 0 && ly.ceiling_min_fraction <= 1,
           "layers.ceiling_min_fraction: must be in (0, 1]");
   require(ly.wall_band_m > 0, "layers.wall_band_m: must be > 0");
+  require(ly.furniture_max_height_m > 0, "layers.furniture_max_height_m: must be > 0");
+  require(ly.ceiling_onset_factor > 1, "layers.ceiling_onset_factor: must be > 1");
   require(ly.min_room_height_m >= 0, "layers.min_room_height_m: must be >= 0");
   require(ly.floor_clearance_m >= 0 && ly.ceiling_clearance_m >= 0, "layers.*_clearance_m: must be >= 0");
   const auto& lo = c.map.layout;
@@ -189,6 +204,12 @@ void validate(const PipelineConfig& c) {
   require(lo.seed_search_radius_m >= 0, "layout.seed_search_radius_m: must be >= 0");
   require(lo.hanging_max_area_m2 >= 0, "layout.hanging_max_area_m2: must be >= 0");
   require(lo.hanging_gap_m > 0, "layout.hanging_gap_m: must be > 0");
+  require(lo.hanging_max_extent_m >= 0, "layout.hanging_max_extent_m: must be >= 0");
+  const auto& ob = c.objects;
+  require(ob.min_area_m2 >= 0, "objects.min_area_m2: must be >= 0");
+  require(ob.crop_margin_m >= 0 && ob.crop_margin_m <= 10, "objects.crop_margin_m: must be in [0, 10]");
+  require(ob.split_height_step_m >= 0, "objects.split_height_step_m: must be >= 0 (0: off)");
+  require(ob.max_vertical_gap_m > 0, "objects.max_vertical_gap_m: must be > 0");
   require(lo.hanging_max_support >= 0 && lo.hanging_max_support <= 1,
           "layout.hanging_max_support: must be in [0, 1]");
 }
@@ -206,7 +227,9 @@ std::string to_yaml(const PipelineConfig& config) {
       open = s;
     }
     out << YAML::Key << k << YAML::Value;
-    if constexpr (std::is_same_v<T, cloud::UpAxis>) {
+    if constexpr (std::is_same_v<T, objects::Connectivity>) {
+      out << static_cast<int>(v);
+    } else if constexpr (std::is_same_v<T, cloud::UpAxis>) {
       out << axis_name(v);
     } else if constexpr (std::is_same_v<T, std::optional<double>>) {
       if (v) out << *v;
@@ -229,7 +252,9 @@ nlohmann::json to_json(const PipelineConfig& config) {
   visit(c, [&](const char* s, const char* k, auto& v) {
     using T = std::decay_t<decltype(v)>;
     auto& slot = j[s][k];
-    if constexpr (std::is_same_v<T, cloud::UpAxis>) {
+    if constexpr (std::is_same_v<T, objects::Connectivity>) {
+      slot = static_cast<int>(v);
+    } else if constexpr (std::is_same_v<T, cloud::UpAxis>) {
       slot = axis_name(v);
     } else if constexpr (std::is_same_v<T, std::optional<double>>) {
       slot = v ? nlohmann::json(*v) : nlohmann::json(nullptr);

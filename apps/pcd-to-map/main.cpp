@@ -8,8 +8,8 @@
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/io/map_io.hpp"
-#include "indoormap/io/render.hpp"
-#include "indoormap/version.hpp"
+#include "objects_outputs.hpp"
+#include "pipeline_run.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
@@ -17,21 +17,10 @@ using nlohmann::json;
 
 namespace {
 
-json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
-
-json plane_json(const cloud::PlaneFit& p) {
-  if (!p.found) return nullptr;
-  return {{"normal", vec(p.normal)}, {"offset_m", p.offset_m}, {"inliers", p.inliers}, {"rms_m", p.rms_m}};
-}
-
-json band_json(const cloud::HeightBand& b) {
-  return {{"lo_m", b.lo_m}, {"hi_m", b.hi_m}, {"layers", {b.lo_layer, b.hi_layer}}};
-}
-
 int run(int argc, char** argv) {
   CLI::App cli_app{
       "pcd-to-map: turn indoor lidar scans into a levelled room layout and a ROS navigation map.\n"
-      "Outputs map.pgm + map.yaml, layout.pgm, layout.png and summary.json in the output directory.\n"};
+      "Outputs map.pgm + map.yaml, layout.pgm, layout.png, objects.json and summary.json.\n"};
   cli_app.footer(
       "Examples:\n"
       "  pcd-to-map clouds/office/cloud.pcd -o out\n"
@@ -57,107 +46,32 @@ int run(int argc, char** argv) {
   const fs::path out = cli.out_dir;
   ensure_writable_dir(out);
 
-  auto t0 = std::chrono::steady_clock::now();
-  cfg.load.progress = app::terminal_progress();
-  cloud::LoadResult loaded = cloud::load_clouds(cli.inputs, cfg.load);
-  const double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  if (!cfg.scanners.empty()) loaded.cloud.scanners = cfg.scanners;
-  const std::size_t kept = loaded.cloud.points.size();
-  const bool scanners_given = !loaded.cloud.scanners.empty();
+  app::PipelineRun run = app::run_pipeline(cli, cfg, /*keep_input_points=*/false);
+  const auto& m = run.map;
+  const auto t_objects = std::chrono::steady_clock::now();
+  const objects::ObjectsResult objs =
+      objects::extract_objects(m.layout.layout, m.geometry, m.voxels, m.layers, cfg.objects);
+  const double objects_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_objects).count();
 
-  layout::MapResult m = [&] {
-    try {
-      return layout::make_map(std::move(loaded.cloud), cfg.map);
-    } catch (const InputError& e) {
-      if (!e.file().empty()) throw;
-      std::string names;  // the data as a whole is unusable: name every input
-      for (const auto& in : cli.inputs) names += (names.empty() ? "" : ", ") + in;
-      throw InputError(names, e.problem(), e.line());
-    }
-  }();
+  const auto t_write = std::chrono::steady_clock::now();
+  std::vector<std::string> outputs = app::write_map_outputs(out, run);
+  app::ObjectOutputs what;
+  what.csv = what.picture = false;
+  for (auto& f : app::write_object_outputs(out, m, objs, what)) outputs.push_back(f);
 
-  // Outputs.
-  t0 = std::chrono::steady_clock::now();
-  std::vector<Eigen::Vector2d> markers;
-  for (const auto& s : m.cloud_map.scanners) markers.emplace_back(s.x(), s.y());
-  if (m.layout.seeds_estimated)
-    for (const auto& s : m.layout.seeds) markers.push_back(m.geometry.center_of(s));
-  io::write_ros_map(out, "map", m.layout.layout, m.geometry);
-  io::write_layout_pgm(out / "layout.pgm", m.layout.layout);
-  io::RenderOptions ro;
-  ro.title = "room layout M_r  (" + std::to_string(m.geometry.width()) + " x " +
-             std::to_string(m.geometry.height()) + " cells of " +
-             std::to_string(static_cast<int>(std::lround(m.geometry.cell_m() * 100))) + " cm)";
-  ro.markers_map = markers;
-  ro.marker_label = m.layout.seeds_estimated ? "scanner (estimated)" : "scanner";
-  io::write_layout_png(out / "layout.png", m.layout.layout, m.geometry, ro);
-  const double write_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-
-  std::uint64_t read = 0, dropped = 0;
-  json inputs = json::array();
-  for (const auto& in : loaded.inputs) {
-    read += in.points_read;
-    dropped += in.points_dropped;
-    inputs.push_back({{"path", in.path}, {"format", in.format}, {"points_read", in.points_read},
-                      {"points_dropped", in.points_dropped}, {"scans", in.scans},
-                      {"scanner_known", in.scanner_known}});
-  }
-  json layers = json::array();
-  for (std::size_t z = 0; z < m.layers.occupied_per_layer.size(); ++z)
-    layers.push_back({{"layer", z}, {"z_m", m.voxels.layer_center_m(static_cast<std::int64_t>(z))},
-                      {"occupied_cells", m.layers.occupied_per_layer[z]}});
-  json rot = json::array();
-  for (int r = 0; r < 3; ++r)
-    rot.push_back({m.level.map_from_input(r, 0), m.level.map_from_input(r, 1), m.level.map_from_input(r, 2)});
-  json scanners = json::array();
-  for (const auto& s : m.cloud_map.scanners) scanners.push_back(vec(s));
-  json seeds = json::array();
-  for (const auto& s : m.layout.seeds) {
-    const auto c = m.geometry.center_of(s);
-    seeds.push_back({c.x(), c.y()});
-  }
-  json timings = {{"load", load_ms}};
-  for (const auto& t : m.timings) timings[t.stage] = t.ms;
-  timings["write"] = write_ms;
-  timings["total"] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_start).count();
-
-  json summary = {
-      {"program", "pcd-to-map"},
-      {"version", kVersion},
-      {"inputs", inputs},
-      {"points", {{"read", read}, {"dropped_nonfinite", dropped}, {"kept", kept},
-                  {"outside_bounds", m.voxels.points_outside}, {"in_grid", m.voxels.points_inside}}},
-      {"levelling", {{"levelled", m.level.levelled}, {"tilt_deg", m.level.tilt_deg},
-                     {"up_input", vec(m.level.up_input)}, {"map_from_input", rot},
-                     {"floor_plane_input", plane_json(m.level.floor)},
-                     {"ceiling_plane_input", plane_json(m.level.ceiling)}, {"note", m.level.note}}},
-      {"grid", {{"resolution_m", m.voxels.cell_m}, {"origin_m", vec(m.voxels.origin_m)},
-                {"size_cells", {m.voxels.nx, m.voxels.ny, m.voxels.nz}},
-                {"bounds_m", {{"lo", vec(m.bounds.lo_m)}, {"hi", vec(m.bounds.hi_m)}}}}},
-      {"floor_z_m", m.layers.floor_z_m},
-      {"ceiling_z_m", m.layers.ceiling_z_m},
-      {"ceiling_found", m.layers.ceiling_found},
-      {"room_height_m", m.layers.ceiling_z_m - m.layers.floor_z_m},
-      {"wall_band", band_json(m.layers.wall_band)},
-      {"furniture_band", band_json(m.layers.furniture_band)},
-      {"layers", layers},
-      {"scanners_map_m", scanners},
-      {"scanner_source", scanners_given ? (cfg.scanners.empty() ? "file" : "config") : "estimated"},
-      {"flood_seeds_map_m", seeds},
-      {"layout_cells", {{"wall", m.layout.cells_wall}, {"furniture", m.layout.cells_furniture},
-                        {"free", m.layout.cells_free}, {"unknown", m.layout.cells_unknown}}},
-      {"timings_ms", timings},
-      {"parameters", app::to_json(cfg)},
-      {"warnings", m.warnings},
-      {"outputs", {"map.pgm", "map.yaml", "layout.pgm", "layout.png", "summary.json"}},
-  };
+  json summary = app::summary_json("pcd-to-map", run, cfg);
+  summary["objects"] = {{"count", objs.objects.size()}, {"file", "objects.json"}};
+  summary["timings_ms"]["objects"] = objects_ms;
+  summary["timings_ms"]["write"] =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_write).count();
+  summary["timings_ms"]["total"] =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_start).count();
+  outputs.push_back("summary.json");
+  summary["outputs"] = outputs;
   io::write_json(out / "summary.json", summary);
 
-  for (const auto& w : m.warnings) std::cerr << "pcd-to-map: warning: " << w << "\n";
-  std::cerr << "pcd-to-map: " << kept << " points (" << dropped << " non-finite dropped), tilt "
-            << m.level.tilt_deg << " deg, floor " << m.layers.floor_z_m << " m, ceiling "
-            << m.layers.ceiling_z_m << " m" << (m.layers.ceiling_found ? "" : " (not detected)")
-            << ", grid " << m.geometry.width() << " x " << m.geometry.height() << "\n";
+  app::report("pcd-to-map", run);
   std::cout << "outputs written to " << out.string() << "\n";
   return 0;
 }

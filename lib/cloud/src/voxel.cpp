@@ -163,6 +163,22 @@ std::string fmt_m(double v) {
   return s.str();
 }
 
+// The first layer from min_layer up whose count exceeds factor x the median count of the wall
+// layers between 0.5 m above the floor and min_layer: where a sloped ceiling begins.
+std::optional<std::int64_t> ceiling_onset(const std::vector<std::int64_t>& h, std::int64_t floor_layer,
+                                          std::int64_t min_layer, std::int64_t last, double cell_m,
+                                          double factor) {
+  const std::int64_t lo = floor_layer + static_cast<std::int64_t>(std::ceil(0.5 / cell_m));
+  if (min_layer - lo < 3 || min_layer > last) return std::nullopt;
+  std::vector<std::int64_t> walls(h.begin() + lo, h.begin() + min_layer);
+  std::nth_element(walls.begin(), walls.begin() + static_cast<std::ptrdiff_t>(walls.size() / 2), walls.end());
+  const double baseline = static_cast<double>(walls[walls.size() / 2]);
+  if (baseline <= 0) return std::nullopt;
+  for (std::int64_t z = min_layer; z <= last; ++z)
+    if (static_cast<double>(h[z]) >= factor * baseline) return z;
+  return std::nullopt;
+}
+
 }  // namespace
 
 LayerAnalysis analyse_layers(const VoxelGrid& g, const LayerParams& p) {
@@ -220,6 +236,14 @@ LayerAnalysis analyse_layers(const VoxelGrid& g, const LayerParams& p) {
       a.ceiling_found = true;
       a.ceiling_layer = z;
       a.ceiling_z_m = g.layer_center_m(z);
+    } else if (auto onset = ceiling_onset(h, a.floor_layer, min_ceiling_layer, last, g.cell_m,
+                                          p.ceiling_onset_factor)) {
+      a.ceiling_found = true;
+      a.ceiling_sloped = true;
+      a.ceiling_layer = *onset;
+      a.ceiling_z_m = g.layer_bottom_m(*onset);
+      a.warnings.push_back("the ceiling is not flat (sloped or stepped); its lowest part, at " +
+                           fmt_m(a.ceiling_z_m) + ", sets the wall band");
     } else {
       a.ceiling_found = false;
       a.ceiling_layer = last;
@@ -241,7 +265,9 @@ LayerAnalysis analyse_layers(const VoxelGrid& g, const LayerParams& p) {
     a.warnings.push_back("room is low: wall band starts at " + fmt_m(wall_lo));
   }
   if (wall_hi <= wall_lo) wall_hi = wall_lo + g.cell_m;
-  const double furn_hi = p.furniture_band_hi_m.value_or(wall_lo);
+  // Objects hanging lower than the wall band (lamps) are not furniture: the band stops at
+  // furniture_max_height_m above the floor.
+  const double furn_hi = p.furniture_band_hi_m.value_or(std::min(wall_lo, a.floor_z_m + p.furniture_max_height_m));
   a.wall_band = make_band(g, wall_lo, wall_hi);
   a.furniture_band = make_band(g, furn_lo, furn_hi);
   return a;

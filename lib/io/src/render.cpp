@@ -46,6 +46,25 @@ void write_layout_png(const std::filesystem::path& path, const Grid<Cell>& layou
     return cv::Point(static_cast<int>(std::lround(cx * k)),
                      title_h + static_cast<int>(std::lround((h - cy) * k)));
   };
+  for (const auto& ov : opt.overlays) {
+    if (ov.points_m.empty()) continue;
+    std::vector<cv::Point> px;
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+    for (const auto& p : ov.points_m) {
+      px.push_back(to_px(p));
+      mean += p;
+    }
+    mean /= static_cast<double>(ov.points_m.size());
+    const cv::Scalar col(ov.rgb[2], ov.rgb[1], ov.rgb[0]);
+    cv::polylines(img, std::vector<std::vector<cv::Point>>{px}, ov.closed, col, ov.thickness_px, cv::LINE_AA);
+    if (!ov.label.empty()) {
+      int base = 0;
+      const cv::Size ts = cv::getTextSize(ov.label, font, 0.45, 1, &base);
+      const cv::Point c = to_px(mean) - cv::Point(ts.width / 2, -ts.height / 2);
+      cv::putText(img, ov.label, c, font, 0.45, {255, 255, 255}, 3, cv::LINE_AA);
+      cv::putText(img, ov.label, c, font, 0.45, col, 1, cv::LINE_AA);
+    }
+  }
   const int arm = std::max(5, 2 * k);
   for (const auto& m : opt.markers_map) {
     const cv::Point p = to_px(m);
@@ -70,6 +89,12 @@ void write_layout_png(const std::filesystem::path& path, const Grid<Cell>& layou
     cv::line(img, p - cv::Point(6, -6), p + cv::Point(6, -6), {0, 0, 220}, 2, cv::LINE_AA);
     cv::putText(img, opt.marker_label, {x + 20, y0 + 13}, font, 0.45, {0, 0, 0}, 1, cv::LINE_AA);
     x += 26 + static_cast<int>(opt.marker_label.size()) * 9;
+  }
+  for (const auto& [label, rgb] : opt.legend) {
+    const cv::Scalar col(rgb[2], rgb[1], rgb[0]);
+    cv::line(img, {x, y0 + 8}, {x + 16, y0 + 8}, col, 3, cv::LINE_AA);
+    cv::putText(img, label, {x + 20, y0 + 13}, font, 0.45, {0, 0, 0}, 1, cv::LINE_AA);
+    x += 26 + static_cast<int>(label.size()) * 9;
   }
   const int bar = static_cast<int>(std::lround(k / geo.cell_m()));
   if (bar > 4 && x + bar + 40 < img_w) {

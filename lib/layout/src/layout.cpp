@@ -76,6 +76,8 @@ Grid<std::uint8_t> hanging_mask(const Grid<std::uint8_t>& walls, const Grid<std:
   for (int lab = 1; lab < n; ++lab) {
     const std::int64_t area = stats.at<int>(lab, cv::CC_STAT_AREA);
     if (area * cell_area > params.hanging_max_area_m2) continue;
+    const int extent = std::max(stats.at<int>(lab, cv::CC_STAT_WIDTH), stats.at<int>(lab, cv::CC_STAT_HEIGHT));
+    if (extent * cell_m > params.hanging_max_extent_m) continue;
     if (static_cast<double>(supported[lab]) > params.hanging_max_support * static_cast<double>(area)) continue;
     is_hanging[lab] = 1;
     HangingObject h;

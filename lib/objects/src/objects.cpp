@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
 #include <opencv2/imgproc.hpp>
 
 #include "indoormap/core/errors.hpp"
@@ -22,9 +23,9 @@ struct Column {
 // least two layers above the floor layer (the floor smears into the next one), then upward
 // while empty gaps stay within max_gap layers.
 Column column_extent(const cloud::VoxelGrid& g, int col, int row, std::int64_t floor_layer,
-                     std::int64_t max_gap) {
+                     std::int64_t top_layer, std::int64_t max_gap) {
   Column c;
-  for (std::int64_t z = std::max<std::int64_t>(0, floor_layer + 2); z < g.nz; ++z) {
+  for (std::int64_t z = std::max<std::int64_t>(0, floor_layer + 2); z <= std::min(top_layer, g.nz - 1); ++z) {
     if (!g.count(col, row, z)) {
       if (c.bottom >= 0 && z - c.top > max_gap) break;
       continue;
@@ -89,11 +90,66 @@ std::vector<Eigen::Vector2d> outline(const Grid<std::int32_t>& labels, int id, C
   return poly;
 }
 
+// Pieces of fewer than min_cells cells (left by the height split: a monitor on a desk, a noisy
+// edge) rejoin the neighbouring piece they share the longest border with, smallest first.
+Labels merge_small_pieces(const Labels& in, const Grid<std::uint8_t>& mask, Connectivity conn,
+                          std::int64_t min_cells) {
+  const int n = in.count;
+  if (n < 2) return in;
+  std::vector<std::int64_t> area(n + 1, 0);
+  for (int v : in.labels.data) ++area[v];
+  std::map<std::pair<int, int>, std::int64_t> border;
+  const int w = mask.width, h = mask.height;
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) {
+      const int a = in.labels.at(c, r);
+      if (!a) continue;
+      for (auto [dc, dr] : {std::pair{1, 0}, {0, 1}}) {
+        if (!mask.contains(c + dc, r + dr)) continue;
+        const int b = in.labels.at(c + dc, r + dr);
+        if (b && b != a) ++border[{std::min(a, b), std::max(a, b)}];
+      }
+    }
+  std::vector<int> parent(n + 1);
+  for (int i = 0; i <= n; ++i) parent[i] = i;
+  auto find = [&](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::vector<int> order(n);
+  for (int i = 0; i < n; ++i) order[i] = i + 1;
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return area[a] < area[b] || (area[a] == area[b] && a < b); });
+  std::vector<std::int64_t> set_area = area;
+  for (int piece : order) {
+    const int root = find(piece);
+    if (set_area[root] >= min_cells) continue;
+    std::map<int, std::int64_t> shared;  // neighbouring set -> border length
+    for (const auto& [pair, len] : border) {
+      const int a = find(pair.first), b = find(pair.second);
+      if (a == b) continue;
+      if (a == root) shared[b] += len;
+      else if (b == root) shared[a] += len;
+    }
+    if (shared.empty()) continue;
+    const int target = std::max_element(shared.begin(), shared.end(), [](const auto& x, const auto& y) {
+                         return x.second < y.second || (x.second == y.second && x.first > y.first);
+                       })->first;
+    parent[root] = target;
+    set_area[target] += set_area[root];
+  }
+  Grid<std::uint8_t> merged_mask = mask;
+  // Relabel: same partition as the union, numbered in raster order, via the generic labeller.
+  return label_components(merged_mask, conn, [&](CellIndex a, CellIndex b) {
+    return find(in.labels.at(a)) == find(in.labels.at(b));
+  });
+}
+
 }  // namespace
 
 ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
-                              const cloud::VoxelGrid& voxels, std::int64_t floor_layer,
+                              const cloud::VoxelGrid& voxels, const cloud::LayerAnalysis& layers,
                               const ObjectParams& params) {
+  const std::int64_t floor_layer = layers.floor_layer, ceiling_layer = layers.ceiling_layer;
   const int w = layout.width, h = layout.height;
   if (w != geo.width() || h != geo.height() || voxels.nx != w || voxels.ny != h)
     throw Error("extract_objects: layout, geometry and voxel grid differ in size");
@@ -113,7 +169,15 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
   for (int r = 0; r < h; ++r)
     for (int c = 0; c < w; ++c)
       if (mask.at(c, r)) {
-        cols.at(c, r) = column_extent(voxels, c, r, floor_layer, max_gap);
+        // Below the ceiling (and the ceiling's own smear): a cell with only ceiling returns above
+        // it has no height.
+        cols.at(c, r) = column_extent(voxels, c, r, floor_layer, ceiling_layer - 2, max_gap);
+        bool wall_face = false;
+        if (cols.at(c, r).top >= layers.wall_band.lo_layer)
+          for (int dr = -1; dr <= 1 && !wall_face; ++dr)
+            for (int dc = -1; dc <= 1; ++dc)
+              if (layout.contains(c + dc, r + dr) && layout.at(c + dc, r + dr) == Cell::kWall) wall_face = true;
+        if (wall_face) cols.at(c, r) = Column{};
         if (cols.at(c, r).top >= 0) {
           no_data.at<std::uint8_t>(r, c) = 0;
           any_data = true;
@@ -144,7 +208,9 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
     joins = [&](CellIndex a, CellIndex b) {
       return std::abs(top.at(a) - top.at(b)) <= params.split_height_step_m + 1e-6;
     };
-  const Labels lab = label_components(mask, params.connectivity, joins);
+  Labels lab = label_components(mask, params.connectivity, joins);
+  if (joins) lab = merge_small_pieces(lab, mask, params.connectivity,
+                                      static_cast<std::int64_t>(std::ceil(params.min_area_m2 / (geo.cell_m() * geo.cell_m()))));
 
   struct Acc {
     std::int64_t cells = 0;

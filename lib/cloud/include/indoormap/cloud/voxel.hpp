@@ -60,9 +60,13 @@ struct LayerParams {
   double floor_min_fraction = 0.3;     ///< floor: first layer from below with this share of the max
   double ceiling_min_fraction = 0.25;  ///< ceiling: first layer from above with this share of max
   double min_room_height_m = 1.8;      ///< the ceiling lies at least this far above the floor
+  /// No strong ceiling layer (a sloped ceiling spreads over many layers): the ceiling starts at the
+  /// first layer above min_room_height whose count exceeds this factor times the walls' baseline.
+  double ceiling_onset_factor = 1.5;
   double floor_clearance_m = 0.10;     ///< the furniture band starts this far above the floor
   double ceiling_clearance_m = 0.15;   ///< the wall band ends this far below the ceiling
   double wall_band_m = 0.50;           ///< thickness of the wall band
+  double furniture_max_height_m = 2.0; ///< the furniture band ends here (above the floor) at most
   // Overrides (map-frame heights, metres); unset means "detect".
   std::optional<double> floor_z_m;
   std::optional<double> ceiling_z_m;
@@ -81,6 +85,7 @@ struct LayerAnalysis {
   std::int64_t floor_layer = 0;
   double floor_z_m = 0.0;
   bool ceiling_found = false;   ///< false: ceiling_z_m is the documented fallback (top of data)
+  bool ceiling_sloped = false;  ///< found as an onset, not a single layer: ceiling_z_m is its lowest part
   std::int64_t ceiling_layer = 0;
   double ceiling_z_m = 0.0;
   HeightBand wall_band;

@@ -1,6 +1,9 @@
 #pragma once
 // PNG pictures of layouts, with a legend, a scale bar and markers.
 #include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <utility>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -10,11 +13,23 @@
 
 namespace indoormap::io {
 
+/// A polyline or polygon drawn over the layout, with an optional text label at its centre.
+struct Overlay {
+  std::vector<Eigen::Vector2d> points_m;  ///< map frame
+  bool closed = true;
+  std::string label;
+  std::array<std::uint8_t, 3> rgb = {200, 0, 160};
+  int thickness_px = 2;
+};
+
 struct RenderOptions {
   std::string title;
   int min_width_px = 640;   ///< cells are scaled up by an integer factor to reach this width
   std::vector<Eigen::Vector2d> markers_map;  ///< scanner positions etc. (map metres), red crosses
   std::string marker_label = "scanner";
+  std::vector<Overlay> overlays;
+  /// Extra legend entries (label, colour) for the overlays.
+  std::vector<std::pair<std::string, std::array<std::uint8_t, 3>>> legend;
 };
 
 /// Renders the layout in colour (unknown grey, wall dark blue, furniture orange, free white),

@@ -26,6 +26,7 @@ struct LayoutParams {
   /// does not). They are no obstacle for a robot on the floor; the paper leaves them in the wall
   /// class.
   double hanging_max_area_m2 = 2.0;
+  double hanging_max_extent_m = 1.5;  ///< longer components are walls seen above an occlusion
   double hanging_gap_m = 0.3;  ///< thickness of the support slice below the wall band
   double hanging_max_support = 0.3;
 };

@@ -21,7 +21,8 @@ struct ObjectParams {
   /// Touching objects of different heights are split: neighbouring cells whose tops differ by
   /// more than this belong to different objects (a chair at a table). 0 = the paper's plain
   /// 2D labelling.
-  double split_height_step_m = 0.15;
+  double split_height_step_m = 0.15;  ///< pieces smaller than min_area_m2 after the split rejoin
+                                      ///< the neighbour they share the longest border with
   double max_vertical_gap_m = 0.3;  ///< a column's top is the highest point reachable from below
                                     ///< without an empty gap longer than this (a lamp above a table
                                     ///< is not the table's top)
@@ -57,9 +58,11 @@ struct ObjectsResult {
 };
 
 /// Finds the objects of the furniture class. voxels supplies heights; it must cover the layout's
-/// grid (same 2D geometry) and floor_layer is the floor's layer in it.
+/// grid (same 2D geometry); heights are searched between the floor and the ceiling layers of
+/// `layers`. Furniture cells beside a wall whose column reaches the wall band hold the wall's
+/// face, not the object: they take the height of the nearest other cell.
 ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geometry,
-                              const cloud::VoxelGrid& voxels, std::int64_t floor_layer,
+                              const cloud::VoxelGrid& voxels, const cloud::LayerAnalysis& layers,
                               const ObjectParams& params = {});
 
 /// Indices of the points (map frame, same order as given) inside each object's crop region: the

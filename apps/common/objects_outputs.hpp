@@ -1,0 +1,31 @@
+#pragma once
+// Writing the furniture objects (objects.json, objects.csv, objects.png, objects/object_<id>.pcd),
+// shared by furniture-extract and pcd-to-map.
+#include <Eigen/Core>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "indoormap/layout/pipeline.hpp"
+#include "indoormap/objects/objects.hpp"
+
+namespace indoormap::app {
+
+struct ObjectOutputs {
+  bool csv = true;
+  bool picture = true;
+  /// Points of the input cloud, input frame, in the order make_map received them; when set, each
+  /// object's crop is written to objects/object_<id>.pcd.
+  const std::vector<Eigen::Vector3f>* input_points = nullptr;
+  double crop_margin_m = 0.05;
+};
+
+/// One object as JSON (map metres). The format is documented in docs/furniture-extract.md.
+nlohmann::json object_json(const objects::FurnitureObject& o);
+
+/// Writes the chosen outputs into out (atomically, each) and returns the list of files written.
+std::vector<std::string> write_object_outputs(const std::filesystem::path& out, const layout::MapResult& map,
+                                              const objects::ObjectsResult& objects,
+                                              const ObjectOutputs& what);
+
+}  // namespace indoormap::app

@@ -1,0 +1,150 @@
+#include "pipeline_run.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+
+#include "indoormap/core/errors.hpp"
+#include "indoormap/io/map_io.hpp"
+#include "indoormap/io/render.hpp"
+#include "indoormap/version.hpp"
+
+namespace indoormap::app {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+json plane_json(const cloud::PlaneFit& p) {
+  if (!p.found) return nullptr;
+  return {{"normal", vec(p.normal)}, {"offset_m", p.offset_m}, {"inliers", p.inliers}, {"rms_m", p.rms_m}};
+}
+
+json band_json(const cloud::HeightBand& b) {
+  return {{"lo_m", b.lo_m}, {"hi_m", b.hi_m}, {"layers", {b.lo_layer, b.hi_layer}}};
+}
+
+}  // namespace
+
+PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_input_points) {
+  PipelineRun run;
+  const auto t0 = std::chrono::steady_clock::now();
+  cfg.load.progress = terminal_progress();
+  cloud::LoadResult loaded = cloud::load_clouds(cli.inputs, cfg.load);
+  run.load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  run.inputs = loaded.inputs;
+  if (!cfg.scanners.empty()) loaded.cloud.scanners = cfg.scanners;
+  run.scanner_source = loaded.cloud.scanners.empty() ? "estimated" : cfg.scanners.empty() ? "file" : "config";
+  run.kept = loaded.cloud.points.size();
+  if (keep_input_points) run.input_points = loaded.cloud.points;
+  try {
+    run.map = layout::make_map(std::move(loaded.cloud), cfg.map);
+  } catch (const InputError& e) {
+    if (!e.file().empty()) throw;
+    std::string names;  // the data as a whole is unusable: name every input
+    for (const auto& in : cli.inputs) names += (names.empty() ? "" : ", ") + in;
+    throw InputError(names, e.problem(), e.line());
+  }
+  return run;
+}
+
+std::vector<std::string> write_map_outputs(const fs::path& out, const PipelineRun& run) {
+  const auto& m = run.map;
+  std::vector<Eigen::Vector2d> markers;
+  for (const auto& s : m.cloud_map.scanners) markers.emplace_back(s.x(), s.y());
+  if (m.layout.seeds_estimated)
+    for (const auto& s : m.layout.seeds) markers.push_back(m.geometry.center_of(s));
+  io::write_ros_map(out, "map", m.layout.layout, m.geometry);
+  io::write_layout_pgm(out / "layout.pgm", m.layout.layout);
+  io::RenderOptions ro;
+  ro.title = "room layout M_r  (" + std::to_string(m.geometry.width()) + " x " +
+             std::to_string(m.geometry.height()) + " cells of " +
+             std::to_string(static_cast<int>(std::lround(m.geometry.cell_m() * 100))) + " cm)";
+  ro.markers_map = markers;
+  ro.marker_label = m.layout.seeds_estimated ? "scanner (estimated)" : "scanner";
+  io::write_layout_png(out / "layout.png", m.layout.layout, m.geometry, ro);
+  return {"map.pgm", "map.yaml", "layout.pgm", "layout.png"};
+}
+
+json summary_json(const std::string& program, const PipelineRun& run, const PipelineConfig& cfg) {
+  const auto& m = run.map;
+  std::uint64_t read = 0, dropped = 0;
+  json inputs = json::array();
+  for (const auto& in : run.inputs) {
+    read += in.points_read;
+    dropped += in.points_dropped;
+    inputs.push_back({{"path", in.path}, {"format", in.format}, {"points_read", in.points_read},
+                      {"points_dropped", in.points_dropped}, {"scans", in.scans},
+                      {"scanner_known", in.scanner_known}});
+  }
+  json layers = json::array();
+  for (std::size_t z = 0; z < m.layers.occupied_per_layer.size(); ++z)
+    layers.push_back({{"layer", z}, {"z_m", m.voxels.layer_center_m(static_cast<std::int64_t>(z))},
+                      {"occupied_cells", m.layers.occupied_per_layer[z]}});
+  json rot = json::array();
+  for (int r = 0; r < 3; ++r)
+    rot.push_back({m.level.map_from_input(r, 0), m.level.map_from_input(r, 1), m.level.map_from_input(r, 2)});
+  json scanners = json::array();
+  for (const auto& s : m.cloud_map.scanners) scanners.push_back(vec(s));
+  json seeds = json::array();
+  for (const auto& s : m.layout.seeds) {
+    const auto c = m.geometry.center_of(s);
+    seeds.push_back({c.x(), c.y()});
+  }
+  json hanging = json::array();
+  for (const auto& hg : m.layout.hanging) {
+    const Eigen::Vector2d lo = m.geometry.origin_m() + Eigen::Vector2d(hg.min_col, hg.min_row) * m.geometry.cell_m();
+    const Eigen::Vector2d hi =
+        m.geometry.origin_m() + Eigen::Vector2d(hg.max_col + 1, hg.max_row + 1) * m.geometry.cell_m();
+    hanging.push_back({{"bbox_m", {{"min", {lo.x(), lo.y()}}, {"max", {hi.x(), hi.y()}}}}, {"cells", hg.cells}});
+  }
+  json timings = {{"load", run.load_ms}};
+  for (const auto& t : m.timings) timings[t.stage] = t.ms;
+  return {
+      {"program", program},
+      {"version", kVersion},
+      {"inputs", inputs},
+      {"points", {{"read", read}, {"dropped_nonfinite", dropped}, {"kept", run.kept},
+                  {"outside_bounds", m.voxels.points_outside}, {"in_grid", m.voxels.points_inside}}},
+      {"levelling", {{"levelled", m.level.levelled}, {"tilt_deg", m.level.tilt_deg},
+                     {"up_input", vec(m.level.up_input)}, {"map_from_input", rot},
+                     {"floor_plane_input", plane_json(m.level.floor)},
+                     {"ceiling_plane_input", plane_json(m.level.ceiling)}, {"note", m.level.note}}},
+      {"grid", {{"resolution_m", m.voxels.cell_m}, {"origin_m", vec(m.voxels.origin_m)},
+                {"size_cells", {m.voxels.nx, m.voxels.ny, m.voxels.nz}},
+                {"bounds_m", {{"lo", vec(m.bounds.lo_m)}, {"hi", vec(m.bounds.hi_m)}}}}},
+      {"floor_z_m", m.layers.floor_z_m},
+      {"ceiling_z_m", m.layers.ceiling_z_m},
+      {"ceiling_found", m.layers.ceiling_found},
+      {"ceiling_sloped", m.layers.ceiling_sloped},
+      {"room_height_m", m.layers.ceiling_z_m - m.layers.floor_z_m},
+      {"wall_band", band_json(m.layers.wall_band)},
+      {"furniture_band", band_json(m.layers.furniture_band)},
+      {"layers", layers},
+      {"scanners_map_m", scanners},
+      {"scanner_source", run.scanner_source},
+      {"flood_seeds_map_m", seeds},
+      {"hanging_objects", hanging},
+      {"layout_cells", {{"wall", m.layout.cells_wall}, {"furniture", m.layout.cells_furniture},
+                        {"free", m.layout.cells_free}, {"unknown", m.layout.cells_unknown}}},
+      {"timings_ms", timings},
+      {"parameters", to_json(cfg)},
+      {"warnings", m.warnings},
+  };
+}
+
+void report(const std::string& program, const PipelineRun& run) {
+  const auto& m = run.map;
+  std::uint64_t dropped = 0;
+  for (const auto& in : run.inputs) dropped += in.points_dropped;
+  for (const auto& w : m.warnings) std::cerr << program << ": warning: " << w << "\n";
+  std::cerr << program << ": " << run.kept << " points (" << dropped << " non-finite dropped), tilt "
+            << m.level.tilt_deg << " deg, floor " << m.layers.floor_z_m << " m, ceiling "
+            << m.layers.ceiling_z_m << " m" << (m.layers.ceiling_found ? "" : " (not detected)")
+            << ", grid " << m.geometry.width() << " x " << m.geometry.height() << "\n";
+}
+
+}  // namespace indoormap::app

@@ -1,0 +1,39 @@
+#pragma once
+// The part of every pipeline app between argument parsing and its own outputs: load the inputs,
+// run make_map, write the map outputs, and assemble summary.json.
+#include <Eigen/Core>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+#include "indoormap/cloud/load.hpp"
+#include "indoormap/layout/pipeline.hpp"
+
+namespace indoormap::app {
+
+struct PipelineRun {
+  std::vector<cloud::InputReport> inputs;
+  std::vector<Eigen::Vector3f> input_points;  ///< input frame; kept only when asked for
+  layout::MapResult map;
+  std::size_t kept = 0;
+  std::string scanner_source;  ///< "file", "config" or "estimated"
+  double load_ms = 0.0;
+};
+
+/// Loads every input and makes the map. An error about the data as a whole (no file named) is
+/// re-thrown naming all inputs.
+PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& config, bool keep_input_points);
+
+/// map.pgm + map.yaml, layout.pgm, layout.png. Returns the file names.
+std::vector<std::string> write_map_outputs(const std::filesystem::path& out, const PipelineRun& run);
+
+/// summary.json contents common to the pipeline apps; apps add their own keys.
+nlohmann::json summary_json(const std::string& program, const PipelineRun& run,
+                            const PipelineConfig& config);
+
+/// Prints the warnings and a one-line report on stderr.
+void report(const std::string& program, const PipelineRun& run);
+
+}  // namespace indoormap::app
