@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "border_outputs.hpp"
 #include "cli.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
@@ -91,6 +92,7 @@ int run(int argc, char** argv) {
   ro.markers_map = markers;
   ro.marker_label = m.layout.seeds_estimated ? "scanner (estimated)" : "scanner";
   io::write_layout_png(out / "layout.png", m.layout.layout, m.geometry, ro);
+  json border_block = app::write_border_outputs(out, m, cfg.border);
   const double write_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
   std::uint64_t read = 0, dropped = 0;
@@ -151,6 +153,8 @@ int run(int argc, char** argv) {
       {"warnings", m.warnings},
       {"outputs", {"map.pgm", "map.yaml", "layout.pgm", "layout.png", "summary.json"}},
   };
+  summary["border"] = border_block;
+  for (const auto& f : border_block["outputs"]) summary["outputs"].push_back(f);
   io::write_json(out / "summary.json", summary);
 
   for (const auto& w : m.warnings) std::cerr << "pcd-to-map: warning: " << w << "\n";
