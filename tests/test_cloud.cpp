@@ -282,3 +282,28 @@ TEST(Layers, ProjectBandIsColumnOr) {
   EXPECT_EQ(m.at(4, 4), 0);
   EXPECT_EQ(project_band(g, b, 6).data, std::vector<std::uint8_t>(80, 0));  // min points
 }
+
+TEST(Layers, IsolatedStrayReturnsAreNotObstacles) {
+  VoxelGrid g;
+  g.cell_m = 0.1;
+  g.nx = 6;
+  g.ny = 4;
+  g.nz = 3;
+  g.counts.assign(g.nx * g.ny * g.nz, 0);
+  auto at = [&](int x, int y, int z) -> std::uint16_t& { return g.counts[(z * g.ny + y) * g.nx + x]; };
+  at(0, 0, 1) = 1;  // one stray return: dropped
+  at(5, 3, 0) = 1;  // a pole seen over its height: kept
+  at(5, 3, 1) = 1;
+  at(5, 3, 2) = 1;
+  at(2, 2, 1) = 1;  // two single returns side by side: kept (a surface, not a stray)
+  at(3, 2, 1) = 1;
+  HeightBand all;
+  all.lo_layer = 0;
+  all.hi_layer = 2;
+  Grid<std::uint8_t> m = project_band(g, all, 1, 3);
+  EXPECT_EQ(m.at(0, 0), 0);
+  EXPECT_EQ(m.at(5, 3), 1);
+  EXPECT_EQ(m.at(2, 2), 1);
+  EXPECT_EQ(m.at(3, 2), 1);
+  EXPECT_EQ(project_band(g, all, 1, 1).at(0, 0), 1);  // filter off
+}

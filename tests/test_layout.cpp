@@ -216,3 +216,34 @@ TEST(Layout, FreeSpaceEqualsOpenCvFloodFillOnRandomMaps) {
             << "trial " << trial << " cell " << c << "," << r;
   }
 }
+
+TEST(Layout, HangingLampIsNotWallButAPillarIs) {
+  const std::vector<std::string> wall_band{
+      "##########",
+      "#........#",
+      "#.LL...P.#",
+      "#.LL.....#",
+      "#........#",
+      "##########",
+  };
+  Grid<std::uint8_t> walls(10, 6, 0), support(10, 6, 0), furn(10, 6, 0);
+  for (int r = 0; r < 6; ++r)
+    for (int c = 0; c < 10; ++c) {
+      const char ch = wall_band[5 - r][c];
+      walls.at(c, r) = ch != '.';
+      // The slice below the wall band: the walls and the pillar continue down, the lamp does not.
+      support.at(c, r) = ch == '#' || ch == 'P';
+      furn.at(c, r) = ch == 'P';
+    }
+  const GridGeometry geo({0.0, 0.0}, 0.1, 10, 6);  // a 0.2 m x 0.2 m lamp
+  LayoutResult r = build_layout(walls, furn, geo, {{0.55, 0.15}}, {}, &support);
+  ASSERT_EQ(r.hanging.size(), 1u);
+  EXPECT_EQ(r.hanging[0].cells, 4);
+  EXPECT_EQ(r.layout.at(2, 3), Cell::kFree);  // under the lamp: floor
+  EXPECT_EQ(r.layout.at(7, 3), Cell::kWall);  // the pillar stays an obstacle
+  EXPECT_EQ(r.layout.at(0, 0), Cell::kWall);
+  // Without the support map the paper's behaviour: the lamp is wall.
+  LayoutParams off;
+  off.hanging_max_area_m2 = 0.0;
+  EXPECT_EQ(build_layout(walls, furn, geo, {{0.55, 0.15}}, off, &support).layout.at(2, 3), Cell::kWall);
+}

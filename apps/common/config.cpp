@@ -42,6 +42,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("voxel", "bounds_sample", vx.bounds_sample);
   auto& ly = c.map.layers;
   f("layers", "min_points_per_voxel", ly.min_points_per_voxel);
+  f("layers", "isolated_min_points", ly.isolated_min_points);
   f("layers", "floor_min_fraction", ly.floor_min_fraction);
   f("layers", "ceiling_min_fraction", ly.ceiling_min_fraction);
   f("layers", "min_room_height_m", ly.min_room_height_m);
@@ -58,6 +59,9 @@ void visit(PipelineConfig& c, F&& f) {
   f("layout", "furniture_closing_iterations", lo.furniture_closing_iterations);
   f("layout", "enclosed_max_area_m2", lo.enclosed_max_area_m2);
   f("layout", "seed_search_radius_m", lo.seed_search_radius_m);
+  f("layout", "hanging_max_area_m2", lo.hanging_max_area_m2);
+  f("layout", "hanging_max_support", lo.hanging_max_support);
+  f("layout", "hanging_gap_m", lo.hanging_gap_m);
   auto& bd = c.border;
   f("border", "dilate_full_size", bd.dilate_full_size);
   f("border", "dilate_cross_size", bd.dilate_cross_size);
@@ -186,6 +190,7 @@ void validate(const PipelineConfig& c) {
   const auto& ly = c.map.layers;
   require(ly.min_points_per_voxel >= 1 && ly.min_points_per_voxel <= 65535,
           "layers.min_points_per_voxel: must be in [1, 65535]");
+  require(ly.isolated_min_points >= 1, "layers.isolated_min_points: must be >= 1");
   require(ly.floor_min_fraction > 0 && ly.floor_min_fraction <= 1, "layers.floor_min_fraction: must be in (0, 1]");
   require(ly.ceiling_min_fraction > 0 && ly.ceiling_min_fraction <= 1,
           "layers.ceiling_min_fraction: must be in (0, 1]");
@@ -197,6 +202,10 @@ void validate(const PipelineConfig& c) {
           "layout.furniture_closing_iterations: must be in [0, 20]");
   require(lo.enclosed_max_area_m2 >= 0, "layout.enclosed_max_area_m2: must be >= 0");
   require(lo.seed_search_radius_m >= 0, "layout.seed_search_radius_m: must be >= 0");
+  require(lo.hanging_max_area_m2 >= 0, "layout.hanging_max_area_m2: must be >= 0");
+  require(lo.hanging_gap_m > 0, "layout.hanging_gap_m: must be > 0");
+  require(lo.hanging_max_support >= 0 && lo.hanging_max_support <= 1,
+          "layout.hanging_max_support: must be in [0, 1]");
   border::validate(c.border);  // throws UsageError naming border.<key>
 }
 

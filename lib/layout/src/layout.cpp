@@ -49,6 +49,58 @@ std::string fmt_xy(const Eigen::Vector2d& p) {
 
 }  // namespace
 
+namespace {
+
+// The cells of hanging wall-band components, and their descriptions.
+Grid<std::uint8_t> hanging_mask(const Grid<std::uint8_t>& walls, const Grid<std::uint8_t>& support,
+                                double cell_m, const LayoutParams& params,
+                                std::vector<HangingObject>* objects) {
+  Grid<std::uint8_t> mask(walls.width, walls.height, 0);
+  if (walls.width == 0 || walls.height == 0) return mask;
+  Grid<std::uint8_t> wcopy = walls;
+  cv::Mat labels, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(as_mat(wcopy), labels, stats, centroids, 8, CV_32S);
+  std::vector<std::int64_t> supported(static_cast<std::size_t>(n), 0);
+  for (int r = 0; r < walls.height; ++r)
+    for (int c = 0; c < walls.width; ++c) {
+      const int lab = labels.at<int>(r, c);
+      if (lab == 0) continue;
+      bool sup = false;
+      for (int dr = -1; dr <= 1 && !sup; ++dr)
+        for (int dc = -1; dc <= 1 && !sup; ++dc)
+          sup = support.contains(c + dc, r + dr) && support.at(c + dc, r + dr);
+      supported[lab] += sup;
+    }
+  const double cell_area = cell_m * cell_m;
+  std::vector<std::uint8_t> is_hanging(static_cast<std::size_t>(n), 0);
+  for (int lab = 1; lab < n; ++lab) {
+    const std::int64_t area = stats.at<int>(lab, cv::CC_STAT_AREA);
+    if (area * cell_area > params.hanging_max_area_m2) continue;
+    if (static_cast<double>(supported[lab]) > params.hanging_max_support * static_cast<double>(area)) continue;
+    is_hanging[lab] = 1;
+    HangingObject h;
+    h.min_col = stats.at<int>(lab, cv::CC_STAT_LEFT);
+    h.min_row = stats.at<int>(lab, cv::CC_STAT_TOP);
+    h.max_col = h.min_col + stats.at<int>(lab, cv::CC_STAT_WIDTH) - 1;
+    h.max_row = h.min_row + stats.at<int>(lab, cv::CC_STAT_HEIGHT) - 1;
+    h.cells = area;
+    if (objects) objects->push_back(h);
+  }
+  for (int r = 0; r < walls.height; ++r)
+    for (int c = 0; c < walls.width; ++c) mask.at(c, r) = is_hanging[labels.at<int>(r, c)];
+  return mask;
+}
+
+}  // namespace
+
+std::vector<HangingObject> find_hanging(const Grid<std::uint8_t>& walls,
+                                        const Grid<std::uint8_t>& support, double cell_m,
+                                        const LayoutParams& params) {
+  std::vector<HangingObject> out;
+  hanging_mask(walls, support, cell_m, params, &out);
+  return out;
+}
+
 Grid<std::uint8_t> passage_area(const Grid<std::uint8_t>& walls) {
   const int w = walls.width, h = walls.height;
   Grid<std::uint8_t> horiz(w, h, 0), out(w, h, 0);
@@ -73,19 +125,25 @@ Grid<std::uint8_t> passage_area(const Grid<std::uint8_t>& walls) {
   return out;
 }
 
-LayoutResult build_layout(const Grid<std::uint8_t>& walls, const Grid<std::uint8_t>& furniture,
+LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::uint8_t>& furniture,
                           const GridGeometry& geo, const std::vector<Eigen::Vector2d>& scanners_map,
-                          const LayoutParams& params) {
-  if (walls.width != furniture.width || walls.height != furniture.height ||
-      walls.width != geo.width() || walls.height != geo.height())
+                          const LayoutParams& params, const Grid<std::uint8_t>* support) {
+  if (walls_in.width != furniture.width || walls_in.height != furniture.height ||
+      walls_in.width != geo.width() || walls_in.height != geo.height())
     throw Error("build_layout: wall map, furniture map and geometry differ in size");
-  const int w = walls.width, h = walls.height;
+  const int w = walls_in.width, h = walls_in.height;
   LayoutResult r;
   r.layout = Grid<Cell>(w, h, Cell::kUnknown);
   if (w == 0 || h == 0) {
     r.warnings.push_back("empty grid: no layout");
     return r;
   }
+  Grid<std::uint8_t> walls = walls_in;
+  if (support && (support->width != w || support->height != h))
+    throw Error("build_layout: support map differs in size");
+  const Grid<std::uint8_t> hanging =
+      hanging_mask(walls_in, support ? *support : furniture, geo.cell_m(), params, &r.hanging);
+  for (std::size_t i = 0; i < walls.size(); ++i) walls.data[i] &= !hanging.data[i];
   // The passes run over the obstacles of both bands. The paper uses the wall band alone, but one
   // gap in it (a window or a glass transom high up in a wall, as in the Jacobs lab) then opens
   // every row or column through the gap, and the whole strip falls outside the room. The lower

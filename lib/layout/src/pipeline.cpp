@@ -1,6 +1,7 @@
 #include "indoormap/layout/pipeline.hpp"
 
 #include <chrono>
+#include <cmath>
 
 namespace indoormap::layout {
 
@@ -38,14 +39,24 @@ MapResult make_map(PointCloud cloud, const MapParams& params) {
   r.timings.push_back({"layers", sw.lap_ms()});
 
   r.geometry = r.voxels.geometry2d();
-  r.walls = cloud::project_band(r.voxels, r.layers.wall_band, params.layers.min_points_per_voxel);
-  r.furniture =
-      cloud::project_band(r.voxels, r.layers.furniture_band, params.layers.min_points_per_voxel);
+  const auto& lp = params.layers;
+  r.walls = cloud::project_band(r.voxels, r.layers.wall_band, lp.min_points_per_voxel,
+                                lp.isolated_min_points);
+  r.furniture = cloud::project_band(r.voxels, r.layers.furniture_band, lp.min_points_per_voxel,
+                                    lp.isolated_min_points);
+  // The slice just below the wall band tells hanging objects (lamps) from walls and pillars.
+  const cloud::HeightBand& wb = r.layers.wall_band;
+  cloud::HeightBand below;
+  below.hi_layer = wb.lo_layer - 1;
+  below.lo_layer = std::max<std::int64_t>(
+      r.layers.furniture_band.lo_layer,
+      below.hi_layer - static_cast<std::int64_t>(std::ceil(params.layout.hanging_gap_m / r.voxels.cell_m)) + 1);
+  const auto support = cloud::project_band(r.voxels, below, lp.min_points_per_voxel, lp.isolated_min_points);
   r.timings.push_back({"project", sw.lap_ms()});
 
   std::vector<Eigen::Vector2d> seeds;
   for (const auto& s : cloud.scanners) seeds.emplace_back(s.x(), s.y());
-  r.layout = build_layout(r.walls, r.furniture, r.geometry, seeds, params.layout);
+  r.layout = build_layout(r.walls, r.furniture, r.geometry, seeds, params.layout, &support);
   for (const auto& w : r.layout.warnings) r.warnings.push_back(w);
   r.timings.push_back({"layout", sw.lap_ms()});
   r.cloud_map = std::move(cloud);

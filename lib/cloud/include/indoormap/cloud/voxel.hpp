@@ -20,7 +20,7 @@ struct VoxelParams {
   double cell_m = 0.05;                    ///< voxel edge
   std::int64_t max_cells = 400'000'000;    ///< refuse larger grids before allocating (2 B/cell)
   double bounds_gap_m = 1.0;               ///< robust bounds stop at an empty gap this wide
-  std::size_t bounds_sample = 262144;      ///< points sampled for the gap search
+  std::size_t bounds_sample = 65536;       ///< points sampled for the gap search
 };
 
 /// Dense voxel grid, layers contiguous: index = (iz * ny + iy) * nx + ix. Counts saturate.
@@ -56,6 +56,7 @@ VoxelGrid voxelize(const std::vector<Eigen::Vector3f>& points, const Bounds3& bo
 
 struct LayerParams {
   int min_points_per_voxel = 1;        ///< a voxel with fewer points counts as empty
+  int isolated_min_points = 3;         ///< points an isolated 2D cell needs (see project_band)
   double floor_min_fraction = 0.3;     ///< floor: first layer from below with this share of the max
   double ceiling_min_fraction = 0.25;  ///< ceiling: first layer from above with this share of max
   double min_room_height_m = 1.8;      ///< the ceiling lies at least this far above the floor
@@ -91,8 +92,12 @@ struct LayerAnalysis {
 /// all data lies in fewer than three layers (nothing to separate).
 LayerAnalysis analyse_layers(const VoxelGrid& grid, const LayerParams& params);
 
-/// The 2D occupancy of a height band: cell = 1 where any voxel of the band column holds at least
-/// min_points points (M_w for the wall band, M_f for the furniture band).
-Grid<std::uint8_t> project_band(const VoxelGrid& grid, const HeightBand& band, int min_points);
+/// The 2D occupancy of a height band (M_w for the wall band, M_f for the furniture band): a cell is
+/// an obstacle where its band column holds points in voxels of at least min_points points. An
+/// isolated cell (no occupied 8-neighbour) needs isolated_min_points points in its column: single
+/// stray returns (mixed pixels at depth edges, dust) do not become objects, while a thin pole,
+/// seen over its height, still does.
+Grid<std::uint8_t> project_band(const VoxelGrid& grid, const HeightBand& band, int min_points,
+                                int isolated_min_points = 1);
 
 }  // namespace indoormap::cloud

@@ -19,6 +19,21 @@ struct LayoutParams {
   /// every pocket furniture, which turns e.g. the notch of a U-shaped room into one big object.
   double enclosed_max_area_m2 = 4.0;
   double seed_search_radius_m = 1.0;  ///< an occupied scanner cell moves to the nearest free one
+  /// Wall-band objects that do not continue downwards are hanging (ceiling lamps, ducts): a
+  /// wall-band component is hanging when it covers at most hanging_max_area_m2 and at most
+  /// hanging_max_support of its cells have an obstacle within one cell in the support map (the
+  /// slice just below the wall band; a wall or a pillar continues there, a lamp above a table
+  /// does not). They are no obstacle for a robot on the floor; the paper leaves them in the wall
+  /// class.
+  double hanging_max_area_m2 = 2.0;
+  double hanging_gap_m = 0.3;  ///< thickness of the support slice below the wall band
+  double hanging_max_support = 0.3;
+};
+
+/// A wall-band object with free floor beneath it (a lamp), removed from the wall class.
+struct HangingObject {
+  int min_col = 0, min_row = 0, max_col = 0, max_row = 0;  ///< bounding box, cells (inclusive)
+  std::int64_t cells = 0;
 };
 
 /// Passage area (step 4): a cell is inside when, in its row and in its column, it lies between
@@ -30,17 +45,26 @@ struct LayoutResult {
   Grid<Cell> layout;                   ///< M_r
   Grid<std::uint8_t> passage;          ///< step 4 result (1 = inside)
   std::vector<CellIndex> seeds;        ///< flood-fill seeds actually used
+  std::vector<HangingObject> hanging;  ///< wall-band objects not counted as wall
   bool seeds_estimated = false;        ///< no scanner position known; seed estimated
   std::vector<std::string> warnings;
   std::int64_t cells_wall = 0, cells_furniture = 0, cells_free = 0, cells_unknown = 0;
 };
 
+/// Wall-band components that are hanging objects (see LayoutParams), 8-connected.
+std::vector<HangingObject> find_hanging(const Grid<std::uint8_t>& walls,
+                                        const Grid<std::uint8_t>& support, double cell_m,
+                                        const LayoutParams& params);
+
 /// Builds M_r from M_w (walls) and M_f (furniture), both 0/1 grids of the same size, flooding
 /// free space from the scanners (map-frame x, y). With no scanner, the seed is the free cell
 /// farthest from any obstacle inside the passage area, and the result says so.
+/// support: the obstacle map of the slice just below the wall band (see LayoutParams); when
+/// null, the furniture map stands in for it.
 LayoutResult build_layout(const Grid<std::uint8_t>& walls, const Grid<std::uint8_t>& furniture,
                           const GridGeometry& geometry,
                           const std::vector<Eigen::Vector2d>& scanners_map,
-                          const LayoutParams& params = {});
+                          const LayoutParams& params = {},
+                          const Grid<std::uint8_t>* support = nullptr);
 
 }  // namespace indoormap::layout

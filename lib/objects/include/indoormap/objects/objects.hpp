@@ -1,0 +1,73 @@
+#pragma once
+// The furniture objects of a room (paper section 3.2.B and its stated purpose: hand "only the data
+// that corresponds to an area of interest" to a recogniser): connected components of the furniture
+// class of M_r, each with its size, place, height range from the voxel grid, and its own points.
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "indoormap/cloud/voxel.hpp"
+#include "indoormap/core/cell.hpp"
+#include "indoormap/core/grid.hpp"
+#include "indoormap/objects/label.hpp"
+
+namespace indoormap::objects {
+
+struct ObjectParams {
+  double min_area_m2 = 0.02;  ///< smaller components are not listed (they stay furniture in M_r)
+  Connectivity connectivity = Connectivity::k4;  ///< the paper's choice
+  double crop_margin_m = 0.05;  ///< crops take the footprint dilated by this much, and z +- it
+  /// Touching objects of different heights are split: neighbouring cells whose tops differ by
+  /// more than this belong to different objects (a chair at a table). 0 = the paper's plain
+  /// 2D labelling.
+  double split_height_step_m = 0.15;
+  double max_vertical_gap_m = 0.3;  ///< a column's top is the highest point reachable from below
+                                    ///< without an empty gap longer than this (a lamp above a table
+                                    ///< is not the table's top)
+};
+
+/// A minimum-area rectangle; length_m runs along angle_deg (counter-clockwise from map +x,
+/// in [0, 180)), width_m across it.
+struct OrientedBox {
+  Eigen::Vector2d center_m = Eigen::Vector2d::Zero();
+  double width_m = 0.0, length_m = 0.0, angle_deg = 0.0;
+};
+
+struct FurnitureObject {
+  int id = 0;                       ///< 1.. in raster order of start_cell
+  std::string kind = "furniture";
+  std::int64_t cells = 0;
+  CellIndex start_cell;             ///< first cell in raster order (row 0 first)
+  CellIndex min_cell, max_cell;     ///< bounding box in cells (inclusive)
+  Eigen::Vector2d min_m = Eigen::Vector2d::Zero(), max_m = Eigen::Vector2d::Zero();  ///< map frame
+  double area_m2 = 0.0;
+  OrientedBox box;
+  std::vector<Eigen::Vector2d> footprint_m;  ///< outline, map frame, counter-clockwise
+  bool has_height = false;          ///< false: no voxels above the footprint (filled-in cells)
+  double z_min_m = 0.0, z_max_m = 0.0;  ///< map frame; z_min = floor height when it stands on it
+  bool on_floor = false;
+  std::uint64_t point_count = 0;    ///< points above the footprint within [z_min, z_max]
+  bool touches_wall = false;        ///< a cell is 8-adjacent to a wall cell
+};
+
+struct ObjectsResult {
+  std::vector<FurnitureObject> objects;
+  Grid<std::int32_t> labels;  ///< object id per cell (0: none, or below min_area)
+};
+
+/// Finds the objects of the furniture class. voxels supplies heights; it must cover the layout's
+/// grid (same 2D geometry) and floor_layer is the floor's layer in it.
+ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geometry,
+                              const cloud::VoxelGrid& voxels, std::int64_t floor_layer,
+                              const ObjectParams& params = {});
+
+/// Indices of the points (map frame, same order as given) inside each object's crop region: the
+/// footprint cells dilated by crop_margin_m, heights within [z_min - margin, z_max + margin].
+/// One list per object, in the order of result.objects. A point may belong to several crops.
+std::vector<std::vector<std::size_t>> crop_indices(const ObjectsResult& result,
+                                                   const GridGeometry& geometry,
+                                                   const std::vector<Eigen::Vector3f>& points_map,
+                                                   double crop_margin_m);
+
+}  // namespace indoormap::objects

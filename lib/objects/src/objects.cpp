@@ -1,0 +1,269 @@
+#include "indoormap/objects/objects.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <opencv2/imgproc.hpp>
+
+#include "indoormap/core/errors.hpp"
+
+namespace indoormap::objects {
+
+namespace {
+
+constexpr float kNoHeight = std::numeric_limits<float>::quiet_NaN();
+
+struct Column {
+  std::int64_t bottom = -1, top = -1;  // layers; -1: nothing above the floor
+};
+
+// The occupied run of a voxel column starting above the floor: the first occupied layer at
+// least two layers above the floor layer (the floor smears into the next one), then upward
+// while empty gaps stay within max_gap layers.
+Column column_extent(const cloud::VoxelGrid& g, int col, int row, std::int64_t floor_layer,
+                     std::int64_t max_gap) {
+  Column c;
+  for (std::int64_t z = std::max<std::int64_t>(0, floor_layer + 2); z < g.nz; ++z) {
+    if (!g.count(col, row, z)) {
+      if (c.bottom >= 0 && z - c.top > max_gap) break;
+      continue;
+    }
+    if (c.bottom < 0) c.bottom = z;
+    c.top = z;
+  }
+  return c;
+}
+
+OrientedBox min_area_box(const std::vector<Eigen::Vector2d>& pts) {
+  OrientedBox b;
+  if (pts.empty()) return b;
+  std::vector<cv::Point2f> cv_pts;
+  for (const auto& p : pts) cv_pts.emplace_back(static_cast<float>(p.x()), static_cast<float>(p.y()));
+  const cv::RotatedRect rr = cv::minAreaRect(cv_pts);
+  cv::Point2f corner[4];
+  rr.points(corner);
+  const Eigen::Vector2d e1(corner[1].x - corner[0].x, corner[1].y - corner[0].y);
+  const Eigen::Vector2d e2(corner[2].x - corner[1].x, corner[2].y - corner[1].y);
+  const Eigen::Vector2d& along = e1.norm() >= e2.norm() ? e1 : e2;
+  b.center_m = {rr.center.x, rr.center.y};
+  b.length_m = std::max(e1.norm(), e2.norm());
+  b.width_m = std::min(e1.norm(), e2.norm());
+  double a = std::atan2(along.y(), along.x()) * 180.0 / M_PI;
+  while (a < 0) a += 180.0;
+  while (a >= 180.0) a -= 180.0;
+  b.angle_deg = a;
+  return b;
+}
+
+// Outline of the cells of one label, traced on a 4x upsampled mask so that it follows the cell
+// edges (within 1/8 cell) rather than the cell centres.
+std::vector<Eigen::Vector2d> outline(const Grid<std::int32_t>& labels, int id, CellIndex lo, CellIndex hi,
+                                     const GridGeometry& geo) {
+  constexpr int kUp = 4;
+  const int bw = hi.col - lo.col + 3, bh = hi.row - lo.row + 3;  // one empty cell around
+  cv::Mat m(bh, bw, CV_8U, cv::Scalar(0));
+  for (int r = lo.row; r <= hi.row; ++r)
+    for (int c = lo.col; c <= hi.col; ++c)
+      if (labels.at(c, r) == id) m.at<std::uint8_t>(r - lo.row + 1, c - lo.col + 1) = 255;
+  cv::Mat up;
+  cv::resize(m, up, {}, kUp, kUp, cv::INTER_NEAREST);
+  std::vector<std::vector<cv::Point>> contours;
+  cv::findContours(up, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
+  if (contours.empty()) return {};
+  const auto& best = *std::max_element(contours.begin(), contours.end(), [](const auto& a, const auto& b) {
+    return cv::contourArea(a) < cv::contourArea(b);
+  });
+  std::vector<Eigen::Vector2d> poly;
+  for (const auto& p : best) {
+    const double col = lo.col - 1 + (p.x + 0.5) / kUp, row = lo.row - 1 + (p.y + 0.5) / kUp;
+    poly.emplace_back(geo.origin_m().x() + col * geo.cell_m(), geo.origin_m().y() + row * geo.cell_m());
+  }
+  double area2 = 0.0;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const auto& a = poly[i];
+    const auto& b = poly[(i + 1) % poly.size()];
+    area2 += a.x() * b.y() - b.x() * a.y();
+  }
+  if (area2 < 0) std::reverse(poly.begin(), poly.end());
+  return poly;
+}
+
+}  // namespace
+
+ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
+                              const cloud::VoxelGrid& voxels, std::int64_t floor_layer,
+                              const ObjectParams& params) {
+  const int w = layout.width, h = layout.height;
+  if (w != geo.width() || h != geo.height() || voxels.nx != w || voxels.ny != h)
+    throw Error("extract_objects: layout, geometry and voxel grid differ in size");
+  ObjectsResult res;
+  res.labels = Grid<std::int32_t>(w, h, 0);
+  if (w == 0 || h == 0) return res;
+
+  Grid<std::uint8_t> mask(w, h, 0);
+  for (std::size_t i = 0; i < mask.size(); ++i) mask.data[i] = layout.data[i] == Cell::kFurniture;
+
+  // Column extents; cells without data (pockets, closed gaps) take the top of the nearest cell
+  // with data so that they join the object they fill.
+  const auto max_gap = static_cast<std::int64_t>(std::ceil(params.max_vertical_gap_m / voxels.cell_m));
+  Grid<Column> cols(w, h);
+  cv::Mat no_data(h, w, CV_8U, cv::Scalar(1));
+  bool any_data = false;
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c)
+      if (mask.at(c, r)) {
+        cols.at(c, r) = column_extent(voxels, c, r, floor_layer, max_gap);
+        if (cols.at(c, r).top >= 0) {
+          no_data.at<std::uint8_t>(r, c) = 0;
+          any_data = true;
+        }
+      }
+  Grid<float> top(w, h, kNoHeight);
+  if (any_data) {
+    cv::Mat dist, nearest;
+    cv::distanceTransform(no_data, dist, nearest, cv::DIST_L2, cv::DIST_MASK_5, cv::DIST_LABEL_PIXEL);
+    std::vector<CellIndex> seed_of(1, CellIndex{});  // label -> data cell
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w; ++c)
+        if (!no_data.at<std::uint8_t>(r, c)) {
+          const int lab = nearest.at<int>(r, c);
+          if (static_cast<std::size_t>(lab) >= seed_of.size()) seed_of.resize(lab + 1);
+          seed_of[lab] = {c, r};
+        }
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w; ++c)
+        if (mask.at(c, r)) {
+          const CellIndex s = seed_of[nearest.at<int>(r, c)];
+          top.at(c, r) = static_cast<float>(voxels.layer_center_m(cols.at(s).top));
+        }
+  }
+
+  std::function<bool(CellIndex, CellIndex)> joins;
+  if (params.split_height_step_m > 0 && any_data)
+    joins = [&](CellIndex a, CellIndex b) {
+      return std::abs(top.at(a) - top.at(b)) <= params.split_height_step_m + 1e-6;
+    };
+  const Labels lab = label_components(mask, params.connectivity, joins);
+
+  struct Acc {
+    std::int64_t cells = 0;
+    CellIndex start{-1, -1}, lo{std::numeric_limits<int>::max(), std::numeric_limits<int>::max()}, hi{-1, -1};
+    std::int64_t bottom = std::numeric_limits<std::int64_t>::max(), top = -1;
+    bool touches_wall = false;
+  };
+  std::vector<Acc> acc(static_cast<std::size_t>(lab.count) + 1);
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) {
+      const int id = lab.labels.at(c, r);
+      if (!id) continue;
+      Acc& a = acc[id];
+      if (a.cells++ == 0) a.start = {c, r};
+      a.lo = {std::min(a.lo.col, c), std::min(a.lo.row, r)};
+      a.hi = {std::max(a.hi.col, c), std::max(a.hi.row, r)};
+      const Column& col = cols.at(c, r);
+      if (col.top >= 0) {
+        a.bottom = std::min(a.bottom, col.bottom);
+        a.top = std::max(a.top, col.top);
+      }
+      for (int dr = -1; dr <= 1 && !a.touches_wall; ++dr)
+        for (int dc = -1; dc <= 1; ++dc)
+          if (layout.contains(c + dc, r + dr) && layout.at(c + dc, r + dr) == Cell::kWall) {
+            a.touches_wall = true;
+            break;
+          }
+    }
+
+  const double cell_area = geo.cell_m() * geo.cell_m();
+  std::vector<int> new_id(acc.size(), 0);
+  for (int id = 1; id <= lab.count; ++id) {
+    const Acc& a = acc[id];
+    if (a.cells * cell_area < params.min_area_m2) continue;
+    FurnitureObject o;
+    o.id = static_cast<int>(res.objects.size()) + 1;
+    new_id[id] = o.id;
+    o.cells = a.cells;
+    o.start_cell = a.start;
+    o.min_cell = a.lo;
+    o.max_cell = a.hi;
+    o.min_m = geo.origin_m() + Eigen::Vector2d(a.lo.col, a.lo.row) * geo.cell_m();
+    o.max_m = geo.origin_m() + Eigen::Vector2d(a.hi.col + 1, a.hi.row + 1) * geo.cell_m();
+    o.area_m2 = a.cells * cell_area;
+    o.touches_wall = a.touches_wall;
+    if (a.top >= 0) {
+      o.has_height = true;
+      o.on_floor = a.bottom <= floor_layer + 2;
+      o.z_min_m = o.on_floor ? voxels.layer_center_m(floor_layer) : voxels.layer_bottom_m(a.bottom);
+      o.z_max_m = voxels.layer_center_m(a.top);
+    }
+    res.objects.push_back(std::move(o));
+  }
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) res.labels.at(c, r) = new_id[lab.labels.at(c, r)];
+
+  for (auto& o : res.objects) {
+    o.footprint_m = outline(res.labels, o.id, o.min_cell, o.max_cell, geo);
+    o.box = min_area_box(o.footprint_m);
+    if (!o.has_height) continue;
+    const auto z0 = static_cast<std::int64_t>(std::floor((o.z_min_m - voxels.origin_m.z()) / voxels.cell_m));
+    const auto z1 = static_cast<std::int64_t>(std::floor((o.z_max_m - voxels.origin_m.z()) / voxels.cell_m));
+    for (int r = o.min_cell.row; r <= o.max_cell.row; ++r)
+      for (int c = o.min_cell.col; c <= o.max_cell.col; ++c)
+        if (res.labels.at(c, r) == o.id)
+          for (std::int64_t z = std::max<std::int64_t>(z0, 0); z <= std::min(z1, voxels.nz - 1); ++z)
+            o.point_count += voxels.count(c, r, z);
+  }
+  return res;
+}
+
+std::vector<std::vector<std::size_t>> crop_indices(const ObjectsResult& result, const GridGeometry& geo,
+                                                   const std::vector<Eigen::Vector3f>& points_map,
+                                                   double crop_margin_m) {
+  const int w = geo.width(), h = geo.height();
+  const std::size_t n_obj = result.objects.size();
+  std::vector<std::vector<std::size_t>> out(n_obj);
+  if (n_obj == 0 || w == 0 || h == 0) return out;
+  const int dil = std::max(0, static_cast<int>(std::ceil(crop_margin_m / geo.cell_m() - 1e-9)));
+
+  // Cell -> objects whose dilated footprint covers it, as a compressed list (CSR).
+  std::vector<std::pair<std::int64_t, int>> covered;  // (cell index, object index)
+  Grid<std::int32_t> last(w, h, -1);
+  for (std::size_t k = 0; k < n_obj; ++k) {
+    const auto& o = result.objects[k];
+    for (int r = o.min_cell.row; r <= o.max_cell.row; ++r)
+      for (int c = o.min_cell.col; c <= o.max_cell.col; ++c) {
+        if (result.labels.at(c, r) != o.id) continue;
+        for (int rr = std::max(0, r - dil); rr <= std::min(h - 1, r + dil); ++rr)
+          for (int cc = std::max(0, c - dil); cc <= std::min(w - 1, c + dil); ++cc)
+            if (last.at(cc, rr) != static_cast<std::int32_t>(k)) {
+              last.at(cc, rr) = static_cast<std::int32_t>(k);
+              covered.emplace_back(static_cast<std::int64_t>(rr) * w + cc, static_cast<int>(k));
+            }
+      }
+  }
+  std::sort(covered.begin(), covered.end());
+  std::vector<std::uint32_t> first(static_cast<std::size_t>(w) * h + 1, 0);
+  for (const auto& [cell, k] : covered) ++first[static_cast<std::size_t>(cell) + 1];
+  for (std::size_t i = 1; i < first.size(); ++i) first[i] += first[i - 1];
+
+  std::vector<float> zlo(n_obj), zhi(n_obj);
+  for (std::size_t k = 0; k < n_obj; ++k) {
+    const auto& o = result.objects[k];
+    zlo[k] = o.has_height ? static_cast<float>(o.z_min_m - crop_margin_m) : -std::numeric_limits<float>::infinity();
+    zhi[k] = o.has_height ? static_cast<float>(o.z_max_m + crop_margin_m) : std::numeric_limits<float>::infinity();
+  }
+  for (std::size_t i = 0; i < points_map.size(); ++i) {
+    const auto& p = points_map[i];
+    if (!p.allFinite()) continue;
+    const CellIndex c = geo.cell_of({p.x(), p.y()});
+    if (!geo.contains(c)) continue;
+    const auto cell = static_cast<std::size_t>(c.row) * w + c.col;
+    for (std::uint32_t j = first[cell]; j < first[cell + 1]; ++j) {
+      const int k = covered[j].second;
+      if (p.z() >= zlo[k] && p.z() <= zhi[k]) out[k].push_back(i);
+    }
+  }
+  return out;
+}
+
+}  // namespace indoormap::objects

@@ -1,0 +1,117 @@
+#pragma once
+// Evaluation of pcd-to-map / furniture-extract results against a scene's ground truth
+// (docs/evaluation.md): per-class IoU of the layout, object recall / precision with height
+// errors, room-polygon Hausdorff distance and area error.
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "indoormap/core/cell.hpp"
+#include "indoormap/core/grid.hpp"
+#include "indoormap/sim/polygon.hpp"
+
+namespace indoormap::sim {
+
+// ---- Layout ------------------------------------------------------------------------------------
+
+struct ClassScore {
+  double intersection_m2 = 0.0;
+  double union_m2 = 0.0;
+  double truth_m2 = 0.0;
+  double result_m2 = 0.0;
+  /// intersection / union; empty when the class appears in neither grid.
+  std::optional<double> iou;
+};
+
+struct LayoutScores {
+  std::array<ClassScore, 4> classes;  ///< indexed by the Cell value
+  std::optional<double> mean_iou;     ///< mean over wall, furniture, free (classes with a union)
+  double accuracy = 0.0;              ///< share of the area (truth or result known) that agrees
+  std::array<std::array<double, 4>, 4> confusion_m2{};  ///< [truth][result] area
+};
+
+/// Compares by metric position: every result cell takes the truth class at its centre (truth
+/// grid by its own geometry; outside = unknown). Truth cells whose centre lies outside the result
+/// grid count as result = unknown, so a cropped result misses what it does not cover. Areas are
+/// in m^2, so grids of different resolution compare fairly. result values must be 0..3.
+LayoutScores evaluate_layout(const GridGeometry& truth_geometry, const Grid<Cell>& truth,
+                             const GridGeometry& result_geometry, const Grid<Cell>& result);
+
+// ---- Objects -----------------------------------------------------------------------------------
+
+struct EvalObject {
+  std::string id;
+  std::string type;  ///< truth: furniture type; result: optional label
+  Polygon2 footprint;
+  std::optional<double> z_min_m, z_max_m;
+  bool on_floor = true;
+};
+
+struct ObjectMatch {
+  std::string truth_id, result_id;
+  double iou = 0.0;
+  std::optional<double> z_min_error_m, z_max_error_m;  ///< result - truth
+};
+
+struct ObjectScores {
+  int truth_count = 0, result_count = 0, matched = 0;
+  double recall = 0.0, precision = 0.0;
+  std::vector<ObjectMatch> matches;
+  std::vector<std::string> missed;  ///< truth ids without a match
+  std::vector<std::string> spurious;  ///< result ids without a match
+  std::optional<double> mean_abs_z_max_error_m, mean_abs_z_min_error_m, max_abs_height_error_m;
+};
+
+/// One-to-one greedy matching by footprint IoU (highest first) with IoU >= min_iou; footprint
+/// IoU is computed by rasterising both polygons at 1 cm. Recall = matched / truth, precision =
+/// matched / result (0 when the denominator is 0).
+ObjectScores evaluate_objects(const std::vector<EvalObject>& truth, const std::vector<EvalObject>& result,
+                              double min_iou = 0.5);
+
+// ---- Rooms -------------------------------------------------------------------------------------
+
+struct TruthRoom {
+  std::string name;
+  std::string kind;  ///< "room" or "corridor"
+  Polygon2 polygon;
+};
+
+struct RoomMatch {
+  int result_index = 0;
+  int truth_index = -1;  ///< -1: overlaps no truth room
+  std::string truth_name;
+  double iou = 0.0;
+  double hausdorff_m = 0.0;
+  double truth_area_m2 = 0.0, result_area_m2 = 0.0;
+  double area_error_m2 = 0.0;   ///< result - truth
+  double area_error_rel = 0.0;  ///< (result - truth) / truth
+};
+
+/// Each result polygon is matched with the truth room it overlaps most (IoU, 2 cm raster); the
+/// Hausdorff distance is between the boundaries sampled every 1 cm.
+std::vector<RoomMatch> evaluate_rooms(const std::vector<TruthRoom>& truth, const std::vector<Polygon2>& result);
+
+// ---- Files -------------------------------------------------------------------------------------
+
+struct TruthFile {
+  std::filesystem::path path;
+  std::vector<TruthRoom> rooms;
+  std::vector<EvalObject> furniture;
+  std::filesystem::path layout_image;  ///< resolved against the JSON's directory
+  GridGeometry layout_geometry;
+};
+
+/// Reads ground_truth.json (as written by scene-sim). Throws InputError naming the file and key.
+TruthFile read_truth_json(const std::filesystem::path& path);
+/// Reads the truth layout image referenced by the truth file (values must be 0..3).
+Grid<Cell> read_layout_pgm(const std::filesystem::path& path, const GridGeometry& expected);
+/// objects.json: {"objects": [{id, footprint [[x,y],...] | obb {center, width_m, length_m,
+/// angle_deg}, z_min_m, z_max_m}]}. length_m runs along angle_deg (counter-clockwise from +x).
+std::vector<EvalObject> read_objects_json(const std::filesystem::path& path);
+/// room.geojson: the Polygon features whose property "kind" is "room" (outer rings).
+std::vector<Polygon2> read_room_geojson(const std::filesystem::path& path);
+
+}  // namespace indoormap::sim

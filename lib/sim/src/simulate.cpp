@@ -1,0 +1,165 @@
+#include "indoormap/sim/simulate.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "indoormap/core/errors.hpp"
+#include "indoormap/sim/world.hpp"
+
+namespace indoormap::sim {
+
+namespace {
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+std::uint64_t splitmix64(std::uint64_t& x) {
+  std::uint64_t z = (x += 0x9e3779b97f4a7c15ULL);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
+
+int azimuth_count(const ScannerParams& s) {
+  return std::max(1, static_cast<int>(std::floor(360.0 / s.azimuth_step_deg + 1e-9)));
+}
+int elevation_count(const ScannerParams& s) {
+  return static_cast<int>(std::floor((s.elevation_max_deg - s.elevation_min_deg) / s.elevation_step_deg + 1e-9)) + 1;
+}
+}  // namespace
+
+Rng::Rng(std::uint64_t seed) {
+  for (auto& s : s_) s = splitmix64(seed);
+}
+
+std::uint64_t Rng::next() {
+  const std::uint64_t result = rotl(s_[1] * 5, 7) * 9;
+  const std::uint64_t t = s_[1] << 17;
+  s_[2] ^= s_[0];
+  s_[3] ^= s_[1];
+  s_[1] ^= s_[2];
+  s_[0] ^= s_[3];
+  s_[2] ^= t;
+  s_[3] = rotl(s_[3], 45);
+  return result;
+}
+
+double Rng::uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+
+int Rng::uniform_int(int lo, int hi) {
+  const std::uint64_t span = static_cast<std::uint64_t>(static_cast<std::int64_t>(hi) - lo) + 1;
+  return lo + static_cast<int>(next() % span);
+}
+
+double Rng::normal() {
+  if (has_spare_) {
+    has_spare_ = false;
+    return spare_;
+  }
+  double u, v, s;
+  do {
+    u = 2.0 * uniform() - 1.0;
+    v = 2.0 * uniform() - 1.0;
+    s = u * u + v * v;
+  } while (s >= 1.0 || s == 0.0);
+  const double f = std::sqrt(-2.0 * std::log(s) / s);
+  spare_ = v * f;
+  has_spare_ = true;
+  return u * f;
+}
+
+std::uint64_t ray_count(const Scene& scene) {
+  return static_cast<std::uint64_t>(azimuth_count(scene.scanner)) *
+         static_cast<std::uint64_t>(elevation_count(scene.scanner)) * scene.scanners.size();
+}
+
+SimResult simulate(const Scene& input, const SimOptions& options) {
+  require_valid(input);
+  const Scene scene = normalised(input);
+  const ScannerParams& sp = scene.scanner;
+  const std::uint64_t rays = ray_count(scene);
+  if (rays > options.max_rays)
+    throw BudgetError("scene: " + std::to_string(rays) + " rays exceed the budget of " +
+                      std::to_string(options.max_rays) + " (coarser scanner.azimuth_step_deg / elevation_step_deg?)");
+
+  const SceneGeometry geometry = build_geometry(scene);
+  RayCaster caster(geometry);
+  const Eigen::Matrix3d R = tilt_rotation(scene.tilt);  // scene -> tilted
+  const Eigen::Matrix3d Rt = R.transpose();
+  const int n_az = azimuth_count(sp), n_el = elevation_count(sp);
+  std::vector<double> cos_el(n_el), sin_el(n_el);
+  for (int j = 0; j < n_el; ++j) {
+    const double el = (sp.elevation_min_deg + j * sp.elevation_step_deg) * kDeg;
+    cos_el[j] = std::cos(el);
+    sin_el[j] = std::sin(el);
+  }
+  const double sector = options.sector_deg > 0 && options.sector_deg < 360 ? options.sector_deg : 360.0;
+  const int n_sectors = static_cast<int>(std::ceil(360.0 / sector - 1e-9));
+
+  SimResult out;
+  out.rays = rays;
+  out.points.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(rays, 50'000'000)));
+  Rng rng(scene.seed);
+  constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> prev_col(n_el, kNone), cur_col(n_el, kNone);
+
+  for (std::size_t s = 0; s < scene.scanners.size(); ++s) {
+    const Eigen::Vector3d origin = scene.scanners[s].position_m;
+    const Eigen::Vector3d origin_tilted = R * origin;
+    out.scanner_positions_m.push_back(origin_tilted);
+    std::fill(prev_col.begin(), prev_col.end(), kNone);
+    int sector_index = -1;
+    for (int i = 0; i < n_az; ++i) {
+      const double az_rel = i * sp.azimuth_step_deg;
+      const int sec = std::min(n_sectors - 1, static_cast<int>(az_rel / sector));
+      if (sec != sector_index) {
+        if (!out.scans.empty()) out.scans.back().end = out.points.size();
+        ScanBlock b;
+        b.scanner = static_cast<int>(s);
+        b.sector = sec;
+        b.azimuth_begin_deg = scene.scanners[s].heading_deg + sec * sector;
+        b.azimuth_end_deg = scene.scanners[s].heading_deg + std::min(360.0, (sec + 1) * sector);
+        b.begin = out.points.size();
+        out.scans.push_back(b);
+        sector_index = sec;
+      }
+      const double az = (scene.scanners[s].heading_deg + az_rel) * kDeg;
+      const double ca = std::cos(az), sa = std::sin(az);
+      double above = kNone;  // true range of the previous ray in this column
+      for (int j = 0; j < n_el; ++j) {
+        const Eigen::Vector3d d_tilted(cos_el[j] * ca, cos_el[j] * sa, sin_el[j]);
+        const Eigen::Vector3d d_scene = Rt * d_tilted;
+        const auto hit = caster.cast(origin, d_scene, sp.range_max_m);
+        const double t = hit ? hit->t_m : kNone;
+        cur_col[j] = t;
+        const double left = prev_col[j];
+        const double below = above;
+        above = t;
+        if (!hit || t < sp.range_min_m) continue;
+        double range = t;
+        bool mixed = false;
+        if (sp.mixed_pixel_probability > 0) {
+          // A depth edge towards the neighbour measured just before (same column or previous
+          // column): the footprint straddles both surfaces and the echo lands in between.
+          double other = kNone;
+          if (!std::isnan(below) && std::abs(below - t) > sp.mixed_pixel_min_jump_m) other = below;
+          else if (!std::isnan(left) && std::abs(left - t) > sp.mixed_pixel_min_jump_m) other = left;
+          if (!std::isnan(other) && rng.uniform() < sp.mixed_pixel_probability) {
+            range = t + rng.uniform() * (other - t);
+            mixed = true;
+          }
+        }
+        if (sp.range_sigma_m > 0) range += sp.range_sigma_m * rng.normal();
+        if (range < sp.range_min_m || range > sp.range_max_m) continue;
+        out.points.emplace_back((origin_tilted + range * d_tilted).cast<float>());
+        out.mixed_pixels += mixed;
+      }
+      std::swap(prev_col, cur_col);
+    }
+    if (!out.scans.empty()) out.scans.back().end = out.points.size();
+  }
+  out.returns = out.points.size();
+  return out;
+}
+
+}  // namespace indoormap::sim

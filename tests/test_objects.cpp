@@ -1,0 +1,227 @@
+// Furniture objects: the paper's two-pass labelling against OpenCV, per-object geometry and
+// heights on hand-made grids, height splitting, and exact point crops.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <opencv2/imgproc.hpp>
+#include <random>
+#include <set>
+
+#include "indoormap/core/errors.hpp"
+#include "indoormap/objects/objects.hpp"
+
+using namespace indoormap;
+using namespace indoormap::objects;
+
+namespace {
+
+// Voxel grid of w x h columns, cell 0.05 m, floor layer 0 (z in [0, 0.05)), nz layers.
+cloud::VoxelGrid voxels(int w, int h, int nz) {
+  cloud::VoxelGrid g;
+  g.cell_m = 0.05;
+  g.nx = w;
+  g.ny = h;
+  g.nz = nz;
+  g.counts.assign(static_cast<std::size_t>(w) * h * nz, 0);
+  return g;
+}
+void fill_column(cloud::VoxelGrid& g, int c, int r, double z0, double z1, std::uint16_t n = 2) {
+  for (std::int64_t z = static_cast<std::int64_t>(z0 / g.cell_m); z < static_cast<std::int64_t>(z1 / g.cell_m); ++z)
+    g.counts[(z * g.ny + r) * g.nx + c] = n;
+}
+
+}  // namespace
+
+TEST(Label, MatchesOpenCvOnRandomMasks) {
+  std::mt19937 rng(21);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int w = 1 + trial % 37, h = 1 + (trial * 7) % 29;
+    std::bernoulli_distribution on(0.3 + 0.4 * (trial % 3) / 2.0);
+    Grid<std::uint8_t> m(w, h);
+    for (auto& v : m.data) v = on(rng);
+    for (auto conn : {Connectivity::k4, Connectivity::k8}) {
+      const Labels ours = label_components(m, conn);
+      cv::Mat ref;
+      const int n = cv::connectedComponents(cv::Mat(h, w, CV_8U, m.data.data()), ref,
+                                            conn == Connectivity::k4 ? 4 : 8, CV_32S);
+      ASSERT_EQ(ours.count, n - 1);
+      // Same partition: a bijection between our labels and OpenCV's.
+      std::map<int, int> fwd, back;
+      for (int r = 0; r < h; ++r)
+        for (int c = 0; c < w; ++c) {
+          const int a = ours.labels.at(c, r), b = ref.at<int>(r, c);
+          ASSERT_EQ(a == 0, b == 0);
+          if (!a) continue;
+          auto [it, fresh] = fwd.emplace(a, b);
+          ASSERT_EQ(it->second, b);
+          auto [it2, fresh2] = back.emplace(b, a);
+          ASSERT_EQ(it2->second, a);
+        }
+      // Raster order: label k first appears before label k + 1.
+      int seen = 0;
+      for (int v : ours.labels.data) {
+        if (v > seen) {
+          ASSERT_EQ(v, ++seen);
+        }
+      }
+    }
+  }
+}
+
+TEST(Label, DiagonalNeighboursJoinOnlyWithEightConnectivity) {
+  Grid<std::uint8_t> m(3, 3, 0);
+  m.at(0, 0) = m.at(1, 1) = m.at(2, 2) = 1;
+  EXPECT_EQ(label_components(m, Connectivity::k4).count, 3);
+  EXPECT_EQ(label_components(m, Connectivity::k8).count, 1);
+  EXPECT_EQ(label_components(Grid<std::uint8_t>(), Connectivity::k4).count, 0);  // empty: no crash
+}
+
+TEST(Objects, GeometryHeightsAndWallContactOnAHandMadeRoom) {
+  // 12 x 8 cells of 5 cm; walls on the border. A cabinet 3x2 against the west wall (0.9 m high),
+  // a table 4x3 in the middle (top 0.75 m, legs only at its corners) with a lamp 1.6 m above.
+  const int w = 12, h = 8;
+  Grid<Cell> L(w, h, Cell::kFree);
+  for (int c = 0; c < w; ++c) L.at(c, 0) = L.at(c, h - 1) = Cell::kWall;
+  for (int r = 0; r < h; ++r) L.at(0, r) = L.at(w - 1, r) = Cell::kWall;
+  auto g = voxels(w, h, 60);
+  for (int r = 3; r <= 4; ++r)
+    for (int c = 1; c <= 3; ++c) {
+      L.at(c, r) = Cell::kFurniture;
+      fill_column(g, c, r, 0.0, 0.9);
+    }
+  for (int r = 2; r <= 4; ++r)
+    for (int c = 6; c <= 9; ++c) {
+      L.at(c, r) = Cell::kFurniture;
+      fill_column(g, c, r, 0.70, 0.75);
+      fill_column(g, c, r, 2.30, 2.40);  // lamp above: not part of the table
+    }
+  fill_column(g, 6, 2, 0.0, 0.7);  // one leg
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  ObjectParams p;
+  p.min_area_m2 = 0.0;
+  ObjectsResult res = extract_objects(L, geo, g, /*floor_layer=*/0, p);
+  ASSERT_EQ(res.objects.size(), 2u);
+  const auto& table = res.objects[0];  // raster order: row 2 comes first
+  const auto& cabinet = res.objects[1];
+  EXPECT_EQ(table.id, 1);
+  EXPECT_EQ(table.cells, 12);
+  EXPECT_EQ(table.start_cell, (CellIndex{6, 2}));
+  EXPECT_EQ(table.min_cell, (CellIndex{6, 2}));
+  EXPECT_EQ(table.max_cell, (CellIndex{9, 4}));
+  EXPECT_NEAR(table.area_m2, 12 * 0.0025, 1e-12);
+  EXPECT_NEAR(table.min_m.x(), 0.30, 1e-9);
+  EXPECT_NEAR(table.max_m.y(), 0.25, 1e-9);
+  EXPECT_NEAR(table.z_max_m, 0.725, 1e-9);  // the top layer's centre, not the lamp
+  EXPECT_TRUE(table.on_floor);              // the leg reaches the floor
+  EXPECT_FALSE(table.touches_wall);
+  EXPECT_NEAR(table.box.length_m, 0.20, 0.02);
+  EXPECT_NEAR(table.box.width_m, 0.15, 0.02);
+  EXPECT_NEAR(table.box.angle_deg, 0.0, 1.0);
+  EXPECT_EQ(cabinet.cells, 6);
+  EXPECT_TRUE(cabinet.touches_wall);
+  EXPECT_NEAR(cabinet.z_max_m, 0.875, 1e-9);
+  EXPECT_EQ(cabinet.point_count, 6u * 2u * 18u);  // 6 columns x 2 points x layers 0..17 (z_min = floor)
+  // The footprint outlines follow the cell edges.
+  double area2 = 0.0;
+  for (std::size_t i = 0; i < table.footprint_m.size(); ++i) {
+    const auto& a = table.footprint_m[i];
+    const auto& b = table.footprint_m[(i + 1) % table.footprint_m.size()];
+    area2 += a.x() * b.y() - b.x() * a.y();
+  }
+  EXPECT_GT(area2, 0.0);  // counter-clockwise
+  EXPECT_NEAR(area2 / 2, table.area_m2, 0.25 * table.area_m2);
+}
+
+TEST(Objects, TouchingObjectsOfDifferentHeightsAreSplit) {
+  const int w = 10, h = 6;
+  Grid<Cell> L(w, h, Cell::kFree);
+  auto g = voxels(w, h, 40);
+  for (int r = 1; r <= 4; ++r)
+    for (int c = 1; c <= 8; ++c) {
+      L.at(c, r) = Cell::kFurniture;
+      fill_column(g, c, r, 0.0, c <= 5 ? 0.75 : 0.45);  // table | chair
+    }
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  ObjectParams p;
+  p.min_area_m2 = 0.0;
+  auto res = extract_objects(L, geo, g, 0, p);
+  ASSERT_EQ(res.objects.size(), 2u);
+  EXPECT_NEAR(res.objects[0].z_max_m, 0.725, 1e-9);
+  EXPECT_NEAR(res.objects[1].z_max_m, 0.425, 1e-9);
+  p.split_height_step_m = 0.0;  // the paper's plain 2D labelling
+  EXPECT_EQ(extract_objects(L, geo, g, 0, p).objects.size(), 1u);
+}
+
+TEST(Objects, RotatedRectangleGivesItsOrientedBox) {
+  const int w = 80, h = 80;
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  Grid<Cell> L(w, h, Cell::kFree);
+  auto g = voxels(w, h, 20);
+  const double ang = 30.0 * M_PI / 180.0;
+  const Eigen::Vector2d centre(2.0, 2.0), u(std::cos(ang), std::sin(ang)), v(-std::sin(ang), std::cos(ang));
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) {
+      const Eigen::Vector2d d = geo.center_of({c, r}) - centre;
+      if (std::abs(d.dot(u)) <= 0.6 && std::abs(d.dot(v)) <= 0.25) {
+        L.at(c, r) = Cell::kFurniture;
+        fill_column(g, c, r, 0.0, 0.5);
+      }
+    }
+  auto res = extract_objects(L, geo, g, 0, {});
+  ASSERT_EQ(res.objects.size(), 1u);
+  const auto& b = res.objects[0].box;
+  EXPECT_NEAR(b.angle_deg, 30.0, 3.0);
+  EXPECT_NEAR(b.length_m, 1.2, 0.08);
+  EXPECT_NEAR(b.width_m, 0.5, 0.08);
+  EXPECT_NEAR(b.center_m.x(), 2.0, 0.05);
+  EXPECT_NEAR(b.center_m.y(), 2.0, 0.05);
+}
+
+TEST(Objects, NoFurnitureIsAnEmptyListAndSmallObjectsAreDropped) {
+  Grid<Cell> L(5, 5, Cell::kFree);
+  auto g = voxels(5, 5, 10);
+  const GridGeometry geo({0.0, 0.0}, 0.05, 5, 5);
+  EXPECT_TRUE(extract_objects(L, geo, g, 0, {}).objects.empty());
+  L.at(2, 2) = Cell::kFurniture;  // 0.0025 m2 < the default minimum area
+  auto res = extract_objects(L, geo, g, 0, {});
+  EXPECT_TRUE(res.objects.empty());
+  EXPECT_EQ(res.labels.at(2, 2), 0);
+  EXPECT_TRUE(extract_objects(Grid<Cell>(), GridGeometry({0, 0}, 0.05, 0, 0), voxels(0, 0, 0), 0, {}).objects.empty());
+  EXPECT_THROW(extract_objects(L, GridGeometry({0, 0}, 0.05, 4, 4), g, 0, {}), Error);
+}
+
+TEST(Objects, CropHoldsExactlyThePointsOfTheRegion) {
+  const int w = 20, h = 20;
+  const GridGeometry geo({-0.5, -0.5}, 0.05, w, h);
+  Grid<Cell> L(w, h, Cell::kFree);
+  auto g = voxels(w, h, 30);
+  for (int r = 5; r <= 8; ++r)
+    for (int c = 5; c <= 9; ++c) {
+      L.at(c, r) = Cell::kFurniture;
+      fill_column(g, c, r, 0.0, 0.60);  // heights 0.1 .. 0.6 -> z_min = floor, z_max = 0.575
+    }
+  ObjectParams p;
+  p.min_area_m2 = 0.0;
+  auto res = extract_objects(L, geo, g, 0, p);
+  ASSERT_EQ(res.objects.size(), 1u);
+  const auto& o = res.objects[0];
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<float> ux(-0.5f, 0.5f), uz(-0.2f, 1.2f);
+  std::vector<Eigen::Vector3f> pts(20000);
+  for (auto& q : pts) q = {ux(rng), ux(rng), uz(rng)};
+  const double margin = 0.05;
+  auto crops = crop_indices(res, geo, pts, margin);
+  ASSERT_EQ(crops.size(), 1u);
+  // Brute force: cell within one cell (the margin) of a footprint cell, z within the margin.
+  std::set<std::size_t> expected;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const CellIndex c = geo.cell_of({pts[i].x(), pts[i].y()});
+    bool near = false;
+    for (int dr = -1; dr <= 1; ++dr)
+      for (int dc = -1; dc <= 1; ++dc)
+        near |= res.labels.contains(c.col + dc, c.row + dr) && res.labels.at(c.col + dc, c.row + dr) == o.id;
+    if (near && pts[i].z() >= o.z_min_m - margin && pts[i].z() <= o.z_max_m + margin) expected.insert(i);
+  }
+  EXPECT_EQ(std::set<std::size_t>(crops[0].begin(), crops[0].end()), expected);
+  EXPECT_GT(expected.size(), 100u);
+}
