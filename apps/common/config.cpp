@@ -71,6 +71,21 @@ void visit(PipelineConfig& c, F&& f) {
   f("objects", "crop_margin_m", ob.crop_margin_m);
   f("objects", "split_height_step_m", ob.split_height_step_m);
   f("objects", "max_vertical_gap_m", ob.max_vertical_gap_m);
+  auto& bd = c.border;
+  f("border", "dilate_full_size", bd.dilate_full_size);
+  f("border", "dilate_cross_size", bd.dilate_cross_size);
+  f("border", "erode_full_size", bd.erode_full_size);
+  f("border", "erode_iterations", bd.erode_iterations);
+  f("border", "simplify_tolerance_m", bd.simplify_tolerance_m);
+  f("border", "face_snap_max_m", bd.face_snap_max_m);
+  f("border", "opening_search_m", bd.opening_search_m);
+  f("border", "opening_min_m", bd.opening_min_m);
+  f("border", "door_min_m", bd.door_min_m);
+  f("border", "door_max_m", bd.door_max_m);
+  f("border", "door_clear_height_m", bd.door_clear_height_m);
+  f("border", "door_probe_m", bd.door_probe_m);
+  f("border", "max_open_fraction", bd.max_open_fraction);
+  f("border", "max_cells", bd.max_cells);
 }
 
 std::string axis_name(cloud::UpAxis a) { return a == cloud::UpAxis::kY ? "y" : "z"; }
@@ -148,7 +163,7 @@ void merge_config_file(PipelineConfig& config, const std::string& path) {
     const auto name = sec.first.as<std::string>();
     const auto it = known.find(name);
     if (it == known.end())
-      throw InputError(path, "unknown section '" + name + "' (sections: input, level, voxel, layers, layout, objects)",
+      throw InputError(path, "unknown section '" + name + "' (sections: input, level, voxel, layers, layout, objects, border)",
                        static_cast<std::size_t>(sec.first.Mark().line + 1));
     if (sec.second.IsNull()) continue;
     if (!sec.second.IsMap())
@@ -212,6 +227,7 @@ void validate(const PipelineConfig& c) {
   require(ob.max_vertical_gap_m > 0, "objects.max_vertical_gap_m: must be > 0");
   require(lo.hanging_max_support >= 0 && lo.hanging_max_support <= 1,
           "layout.hanging_max_support: must be in [0, 1]");
+  border::validate(c.border);  // throws UsageError naming border.<key>
 }
 
 std::string to_yaml(const PipelineConfig& config) {

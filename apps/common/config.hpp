@@ -1,12 +1,14 @@
 #pragma once
 // The YAML configuration of the pipeline apps. The tree mirrors the parameter structs:
-// input.*, level.*, voxel.*, layers.*, layout.*, objects.*; defaults are the structs' defaults and are
+// input.*, level.*, voxel.*, layers.*, layout.*, objects.*, border.*; defaults are the structs'
+// defaults and are
 // documented in config/default.yaml. Unknown keys are errors (a typo must not be ignored).
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "indoormap/border/border.hpp"
 #include "indoormap/cloud/load.hpp"
 #include "indoormap/layout/pipeline.hpp"
 #include "indoormap/objects/objects.hpp"
@@ -20,6 +22,7 @@ struct PipelineConfig {
   std::vector<Eigen::Vector3d> scanners;
   layout::MapParams map;
   objects::ObjectParams objects;
+  border::BorderParams border;  ///< room border closure (border.*)
 };
 
 /// Reads a YAML file over the defaults. Throws InputError naming the file, key and line.

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "border_outputs.hpp"
 #include "cli.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
@@ -60,7 +61,11 @@ int run(int argc, char** argv) {
   what.csv = what.picture = false;
   for (auto& f : app::write_object_outputs(out, m, objs, what)) outputs.push_back(f);
 
+  json border_block = app::write_border_outputs(out, m, cfg.border);
+  for (const auto& f : border_block["outputs"]) outputs.push_back(f.get<std::string>());
+
   json summary = app::summary_json("pcd-to-map", run, cfg);
+  summary["border"] = border_block;
   summary["objects"] = {{"count", objs.objects.size()}, {"file", "objects.json"}};
   summary["timings_ms"]["objects"] = objects_ms;
   summary["timings_ms"]["write"] =

@@ -1,0 +1,24 @@
+#pragma once
+// pcd-to-map's border outputs (docs/border-closure.md): the room border closed from the layout,
+// written as room.geojson, room.json and border.png.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "indoormap/border/border.hpp"
+#include "indoormap/layout/pipeline.hpp"
+
+namespace indoormap::app {
+
+/// Closes the room border of m and writes, atomically, into out:
+///  - room.geojson: a FeatureCollection in map metres: the room Polygon (kind "room", area_m2,
+///    perimeter_m; counter-clockwise, closed ring), one LineString per opening (kind "opening",
+///    width_m, door_candidate) and the interior objects' boxes (kind "interior_object");
+///  - room.json: the raw chain (cells and metres), polygon, openings, components;
+///  - border.png: the layout with the chain, the polygon and the openings drawn, with a legend.
+/// No closed border is an expected outcome: the files are still written (without the room
+/// feature), a warning goes to stderr, and the returned block says closed = false with the
+/// reason. Returns the block for summary.json, whose "outputs" lists the files written.
+nlohmann::json write_border_outputs(const std::filesystem::path& out, const layout::MapResult& m,
+                                    const border::BorderParams& params);
+
+}  // namespace indoormap::app

@@ -1,0 +1,160 @@
+#pragma once
+// Room border closure (paper section 3.2.C; docs/border-closure.md): the broken, noisy border of a
+// scanned room becomes one closed chain of cells in traversal order, a simple counter-clockwise
+// polygon in map metres, and the list of the openings (doors, scan gaps) it runs across.
+//
+// Steps: (1) the heavy border: the marked cells of M_r dilated (full 5x5, then a 3x3 cross),
+// minus that dilation eroded twice (full 5x5); (2) M_Lee: -1 border, -4 room space, -5 virgin;
+// (3) 8-connected components of the border with their bounding boxes, classified by counting the
+// "switches" along their horizontal mid-line; (4) for every ring: opening lines -2 / -3, the Lee
+// wave around the ring, the backward pass preferring cells that touch room space; (5) the ring
+// whose polygon contains the scanner is the room border; (6) openings, polygon, area, perimeter.
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "indoormap/border/polygon.hpp"
+#include "indoormap/core/cell.hpp"
+#include "indoormap/core/grid.hpp"
+
+namespace indoormap::layout {
+struct MapResult;
+}
+
+namespace indoormap::border {
+
+struct BorderParams {
+  int dilate_full_size = 5;   ///< [cells] side of the full square dilation element (odd; 1 = skip)
+  int dilate_cross_size = 3;  ///< [cells] side of the cross-shaped dilation element (odd; 1 = skip)
+  int erode_full_size = 5;    ///< [cells] side of the full square erosion element (odd, >= 3)
+  int erode_iterations = 2;   ///< erosions with that element (>= 1)
+  double simplify_tolerance_m = 0.05;  ///< [m] Douglas-Peucker tolerance of polygon_m (0 = raw)
+  /// [m] the chain runs at the back of the wall; each polygon edge is moved inwards to the wall
+  /// face (the first room-space cell, median along the edge) by at most this much (0 = off).
+  double face_snap_max_m = 0.3;
+  /// [m] a chain cell is closed when a wall or furniture cell lies within this distance of it;
+  /// chain cells with none are open (the chain runs at the back of the wall, sometimes a cell off).
+  double opening_search_m = 0.2;
+  double opening_min_m = 0.3;  ///< [m] narrower gaps between obstacles are not reported
+  double door_min_m = 0.6;     ///< [m] openings this wide or wider are door candidates ...
+  double door_max_m = 1.2;     ///< [m] ... up to this width
+  /// [m] above the floor (used by the MapResult overload only): an obstacle cell whose voxel
+  /// column is empty from the furniture band's bottom up to this height is open below, e.g. a
+  /// door under its lintel, which the wall and furniture bands both see as an obstacle.
+  double door_clear_height_m = 1.8;
+  double door_probe_m =
+      3.0;  ///< [m] how far beyond such a cell a ray looks for points seen through it
+  /// A ring whose openings add up to more than this share of its perimeter is not a room border
+  /// (an open scan): closed = false, with the reason; chain and polygon are still given.
+  double max_open_fraction = 0.4;
+  std::int64_t max_cells = 100'000'000;  ///< refuse larger layouts before allocating
+};
+
+/// What a border component was classified as.
+enum class ComponentKind : std::uint8_t {
+  kRoomBorder,  ///< the closed ring whose polygon contains the scanner
+  kRing,        ///< another closed ring (a column, an installation, a second room)
+  kObject,      ///< fewer than two switches on its mid-line, or not closed: an interior object
+};
+std::string_view to_string(ComponentKind k);
+
+/// One 8-connected component of the heavy border (M_Lee label -6, -7, ...).
+struct BorderComponent {
+  int label = 0;           ///< M_Lee label (negative, from -6 down)
+  CellIndex start;         ///< first cell in row-major scan order
+  CellIndex min, max;      ///< inclusive bounding box
+  std::int64_t cells = 0;  ///< cell count
+  int switches = 0;        ///< runs of the component along its horizontal mid-line
+  ComponentKind kind = ComponentKind::kObject;
+  std::string note;              ///< why a ring candidate could not be closed (empty otherwise)
+  std::vector<CellIndex> chain;  ///< the closed chain (rings only), counter-clockwise
+};
+
+/// A stretch of the room border with no obstacle: a door, a passage or a gap in the scan.
+struct Opening {
+  Eigen::Vector2d a_m = Eigen::Vector2d::Zero();  ///< end points on the obstacle faces (map m)
+  Eigen::Vector2d b_m = Eigen::Vector2d::Zero();
+  double width_m = 0.0;            ///< |b - a|: the clear width between the obstacles
+  bool is_door_candidate = false;  ///< door_min_m <= width_m <= door_max_m
+  std::size_t chain_first = 0;     ///< open chain cells: chain[first .. last] (cyclic)
+  std::size_t chain_last = 0;
+};
+
+/// An interior object: a border component that is not the room border.
+struct InteriorObject {
+  Eigen::Vector2d min_m = Eigen::Vector2d::Zero(), max_m = Eigen::Vector2d::Zero();  ///< bbox
+  CellIndex min, max;
+  std::int64_t cells = 0;
+  ComponentKind kind = ComponentKind::kObject;
+};
+
+struct BorderResult {
+  bool closed = false;  ///< a closed border containing the scanner was found
+  std::string reason;   ///< why not, when !closed (an expected outcome, e.g. an open scan)
+  /// The room border: a closed chain of distinct cells in traversal order, counter-clockwise;
+  /// each cell is an 8-neighbour of the next, and the last of the first.
+  std::vector<CellIndex> chain;
+  std::vector<Eigen::Vector2d> chain_m;  ///< cell centres of chain (map metres)
+  Polygon polygon_m;  ///< simplified chain polygon moved to the wall faces; simple, ccw (map m)
+  Polygon chain_polygon_m;   ///< the simplified chain polygon before the move to the faces
+  double area_m2 = 0.0;      ///< of polygon_m
+  double perimeter_m = 0.0;  ///< of polygon_m
+  std::vector<Opening> openings;
+  std::vector<BorderComponent> components;  ///< every component, in label order
+  std::vector<InteriorObject> interior_objects;
+  int room_component = -1;                              ///< index into components, -1 when !closed
+  Eigen::Vector2d scanner_m = Eigen::Vector2d::Zero();  ///< the position used for the choice
+  std::vector<std::string> warnings;
+  // Intermediate maps (same size as the layout), for pictures and inspection.
+  Grid<std::uint8_t> heavy;  ///< step 1: 1 = heavy border
+  Grid<std::int32_t> lee;    ///< M_Lee after the waves: -1..-5 marks, labels, wave distances > 0
+};
+
+/// Step 1: the heavy border of the marked (non-unknown) cells of the layout. Throws UsageError
+/// for invalid structuring elements.
+Grid<std::uint8_t> heavy_border(const Grid<Cell>& layout, const BorderParams& params = {});
+
+/// Steps 2-3: M_Lee (-1 border, -4 room space, -5 virgin; border cells then relabelled -6, -7,
+/// ... per 8-connected component) and the components with bounding boxes and switch counts.
+/// Components with two or more switches are returned as kRing candidates, others as kObject.
+struct LeeMarking {
+  Grid<std::int32_t> lee;
+  std::vector<BorderComponent> components;
+};
+LeeMarking mark_border_components(const Grid<Cell>& layout, const Grid<std::uint8_t>& heavy);
+
+/// Step 4 for one ring candidate: opening lines, Lee wave, backward pass. Writes the wave into
+/// lee and returns the closed chain (counter-clockwise), or nullopt with the reason in *why.
+std::optional<std::vector<CellIndex>> trace_ring(Grid<std::int32_t>& lee,
+                                                 const BorderComponent& comp,
+                                                 std::string* why = nullptr);
+
+/// The whole closure. scanners_map: scanner positions (map metres); the room border is the
+/// smallest closed ring whose polygon contains the first scanner that lies inside any ring.
+/// Without scanners the largest ring is taken, with a warning. open_below (optional, same size
+/// as the layout): 1 where an obstacle cell is open below door height (see door_clear_height_m).
+/// Throws UsageError for invalid params, Error when the sizes disagree, BudgetError when the
+/// layout exceeds params.max_cells.
+BorderResult close_border(const Grid<Cell>& layout, const GridGeometry& geometry,
+                          const std::vector<Eigen::Vector2d>& scanners_map,
+                          const BorderParams& params = {},
+                          const Grid<std::uint8_t>* open_below = nullptr);
+
+/// The closure on a pipeline result: scanners from cloud_map (or the estimated flood seeds), and
+/// open_below from the voxel grid between the furniture band's bottom and door_clear_height_m.
+BorderResult close_border(const layout::MapResult& map, const BorderParams& params = {});
+
+/// Obstacle (wall / furniture) cells of the layout that are open below door height: their voxel
+/// column is empty from the furniture band's bottom to door_clear_height_m above the floor, and
+/// a scanner's ray through them finds points below that height within door_probe_m beyond them
+/// (so the foot of a wall merely hidden behind a cabinet does not count).
+Grid<std::uint8_t> open_below_mask(const layout::MapResult& map,
+                                   const std::vector<Eigen::Vector2d>& scanners_map,
+                                   const BorderParams& params = {});
+
+/// Throws UsageError naming the field ("border.door_min_m: ...") for invalid parameters.
+void validate(const BorderParams& params);
+
+}  // namespace indoormap::border
