@@ -58,6 +58,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("layout", "furniture_closing_iterations", lo.furniture_closing_iterations);
   f("layout", "enclosed_max_area_m2", lo.enclosed_max_area_m2);
   f("layout", "seed_search_radius_m", lo.seed_search_radius_m);
+  visit_plan(c.plan, f);
 }
 
 std::string axis_name(cloud::UpAxis a) { return a == cloud::UpAxis::kY ? "y" : "z"; }
@@ -131,7 +132,7 @@ void merge_config_file(PipelineConfig& config, const std::string& path) {
     const auto name = sec.first.as<std::string>();
     const auto it = known.find(name);
     if (it == known.end())
-      throw InputError(path, "unknown section '" + name + "' (sections: input, level, voxel, layers, layout)",
+      throw InputError(path, "unknown section '" + name + "' (sections: input, level, voxel, layers, layout, robot, safe_zone, planner)",
                        static_cast<std::size_t>(sec.first.Mark().line + 1));
     if (sec.second.IsNull()) continue;
     if (!sec.second.IsMap())
@@ -182,6 +183,7 @@ void validate(const PipelineConfig& c) {
           "layout.furniture_closing_iterations: must be in [0, 20]");
   require(lo.enclosed_max_area_m2 >= 0, "layout.enclosed_max_area_m2: must be >= 0");
   require(lo.seed_search_radius_m >= 0, "layout.seed_search_radius_m: must be >= 0");
+  validate(c.plan);
 }
 
 std::string to_yaml(const PipelineConfig& config) {

@@ -1,6 +1,6 @@
 #pragma once
 // The YAML configuration of the pipeline apps. The tree mirrors the parameter structs:
-// input.*, level.*, voxel.*, layers.*, layout.*; defaults are the structs' defaults and are
+// input.*, level.*, voxel.*, layers.*, layout.*, robot.*, safe_zone.*, planner.*; defaults are the structs' defaults and are
 // documented in config/default.yaml. Unknown keys are errors (a typo must not be ignored).
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
@@ -9,6 +9,7 @@
 
 #include "indoormap/cloud/load.hpp"
 #include "indoormap/layout/pipeline.hpp"
+#include "plan_config.hpp"
 
 namespace indoormap::app {
 
@@ -18,6 +19,7 @@ struct PipelineConfig {
   /// the positions found in the files.
   std::vector<Eigen::Vector3d> scanners;
   layout::MapParams map;
+  PlanConfig plan;  ///< robot.*, safe_zone.*, planner.*: the route of --start / --goal
 };
 
 /// Reads a YAML file over the defaults. Throws InputError naming the file, key and line.

@@ -10,6 +10,7 @@
 #include "indoormap/io/map_io.hpp"
 #include "indoormap/io/render.hpp"
 #include "indoormap/version.hpp"
+#include "route_outputs.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
@@ -92,6 +93,7 @@ int run(int argc, char** argv) {
   ro.marker_label = m.layout.seeds_estimated ? "scanner (estimated)" : "scanner";
   io::write_layout_png(out / "layout.png", m.layout.layout, m.geometry, ro);
   const double write_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  const auto route = app::write_route_outputs(out, cli, cfg, m.layout.layout, m.geometry);  // --start/--goal
 
   std::uint64_t read = 0, dropped = 0;
   json inputs = json::array();
@@ -150,6 +152,7 @@ int run(int argc, char** argv) {
       {"parameters", app::to_json(cfg)},
       {"warnings", m.warnings},
       {"outputs", {"map.pgm", "map.yaml", "layout.pgm", "layout.png", "summary.json"}},
+      {"route", route ? route->summary : json(nullptr)},
   };
   io::write_json(out / "summary.json", summary);
 
@@ -159,7 +162,8 @@ int run(int argc, char** argv) {
             << m.layers.ceiling_z_m << " m" << (m.layers.ceiling_found ? "" : " (not detected)")
             << ", grid " << m.geometry.width() << " x " << m.geometry.height() << "\n";
   std::cout << "outputs written to " << out.string() << "\n";
-  return 0;
+  if (route && !route->found) std::cerr << "pcd-to-map: " << route->message << "\n";
+  return route && !route->found ? static_cast<int>(ExitCode::kNoResult) : 0;
 }
 
 }  // namespace
