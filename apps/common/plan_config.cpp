@@ -44,7 +44,9 @@ void merge_plan_config_file(PlanConfig& config, const std::string& path) {
   }
   visit_plan(config, [&](const char* s, const char* k, auto& v) {
     using T = std::decay_t<decltype(v)>;
-    const YAML::Node n = root[s] ? root[s][k] : YAML::Node();
+    const YAML::Node sec = root[s];
+    if (!sec) return;
+    const YAML::Node n = sec[k];
     if (!n) return;
     const std::string full = std::string(s) + "." + k;
     auto fail = [&](const std::string& what) {

@@ -20,8 +20,10 @@ struct RouteOutputs {
 
 /// nullopt when no --start / --goal was given. Throws the planner's typed errors (start or goal
 /// outside the map or unsafe: exit code 2).
-std::optional<RouteOutputs> write_route_outputs(const std::filesystem::path& out, const PipelineCli& cli,
-                                                const PipelineConfig& config, const Grid<Cell>& layout,
+std::optional<RouteOutputs> write_route_outputs(const std::filesystem::path& out,
+                                                const PipelineCli& cli,
+                                                const PipelineConfig& config,
+                                                const Grid<Cell>& layout,
                                                 const GridGeometry& geometry);
 
 }  // namespace indoormap::app

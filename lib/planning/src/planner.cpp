@@ -304,7 +304,7 @@ Grid<std::uint8_t> trajectory_region(const Grid<std::int32_t>& wave, CellIndex s
 }
 
 ExactResult exact_min_moves(const Grid<SafeCell>& safe, CellIndex start, CellIndex goal,
-                            const NeighbourhoodTemplate& t, const PlannerParams& p) {
+                            const NeighbourhoodTemplate& t, const PlannerParams& p, int bound) {
   ExactResult res;
   const int w = safe.width, h = safe.height;
   if (!safe.contains(start.col, start.row) || !safe.contains(goal.col, goal.row) ||
@@ -368,6 +368,9 @@ ExactResult exact_min_moves(const Grid<SafeCell>& safe, CellIndex start, CellInd
           // Every move but the last is at least D_min long.
           if (static_cast<std::int32_t>(ni) != gi && ep.length_m < p.d_min_m) return;
           if (closed[ni]) return;
+          // A route of `bound` moves is known: only strictly fewer moves can improve on it (the
+          // length tie-break among equal moves is left to the known route).
+          if (gm + h_moves(nc) >= bound) return;
           const double nl = gl + ep.length_m;
           if (gm > g_moves[ni] || (gm == g_moves[ni] && nl >= g_len[ni])) return;
           g_moves[ni] = gm;
@@ -489,12 +492,17 @@ PlanResult plan_routes(const Grid<SafeCell>& safe, const GridGeometry& geometry,
       found.emplace_back(std::vector<CellIndex>{res.start_cell}, "paper");
   }
   if (params.exact_search) {
-    ExactResult ex = exact_min_moves(safe, res.start_cell, res.goal_cell, t, params);
+    // The paper's best route bounds the search: it only has to look for fewer moves.
+    const int bound =
+        res.paper_best_moves >= 0 ? res.paper_best_moves : std::numeric_limits<int>::max();
+    ExactResult ex = exact_min_moves(safe, res.start_cell, res.goal_cell, t, params, bound);
     res.exact_complete = ex.complete;
     res.exact_nodes = ex.nodes;
     if (ex.cells) {
       res.exact_best_moves = static_cast<int>(ex.cells->size()) - 1;
       found.emplace_back(std::move(*ex.cells), "exact");
+    } else if (ex.complete && res.paper_best_moves >= 0) {
+      res.exact_best_moves = res.paper_best_moves;  // proven: no route with fewer moves exists
     }
   }
   for (auto& [cells, source] : found) {

@@ -8,6 +8,7 @@
 // its length is at most D_max and, unless it is the route's last move, at least D_min.
 #include <Eigen/Core>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -112,7 +113,7 @@ struct PlanResult {
   Grid<std::int32_t> wave;      ///< Lee wave from the start (stopped at the goal's index)
   Grid<std::uint8_t> region;    ///< trajectory region M_tb
   int paper_best_moves = -1;    ///< -1: the paper's rules found no route (or were not run)
-  int exact_best_moves = -1;    ///< -1: none (or not run)
+  int exact_best_moves = -1;    ///< fewest moves proven by the exact search; -1: none / not run
   bool exact_complete = false;  ///< the exact search finished within max_nodes
   std::int64_t paper_nodes = 0, exact_nodes = 0;  ///< expanded nodes
 };
@@ -150,8 +151,10 @@ struct ExactResult {
   bool complete = true;
   std::int64_t nodes = 0;
 };
+/// bound: only routes of fewer moves are searched (nullopt then means "none with fewer").
 ExactResult exact_min_moves(const Grid<SafeCell>& safe, CellIndex start, CellIndex goal,
-                            const NeighbourhoodTemplate& tmpl, const PlannerParams& params);
+                            const NeighbourhoodTemplate& tmpl, const PlannerParams& params,
+                            int bound = std::numeric_limits<int>::max());
 
 /// Builds the commands, turns and length of a route through the given cells.
 Route make_route(const std::vector<CellIndex>& cells, const GridGeometry& geometry,
