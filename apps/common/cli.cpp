@@ -25,6 +25,8 @@ void add_pipeline_options(CLI::App& app, PipelineCli& cli) {
                  "Scanner position X,Y,Z in metres (input frame); repeat for several. Overrides file poses");
   app.add_option("--cell-m", cli.cell_m, "Voxel / map cell size in metres (voxel.cell_m)");
   app.add_flag("--no-level", cli.no_level, "Do not level the cloud (level.enabled: false)");
+  app.add_option("--start", cli.start, "Route start X,Y[,DEG] in the map frame (with --goal: route outputs)");
+  app.add_option("--goal", cli.goal, "Route goal X,Y[,DEG] in the map frame (with --start)");
 }
 
 namespace {
@@ -41,6 +43,23 @@ double parse_number(const std::string& s, const std::string& what) {
 }
 
 }  // namespace
+
+planning::Pose2 parse_pose(const std::string& text, const std::string& option) {
+  std::vector<double> v;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const auto comma = text.find(',', start);
+    v.push_back(parse_number(text.substr(start, comma - start), option));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (v.size() != 2 && v.size() != 3)
+    throw UsageError(option + ": expected X,Y or X,Y,DEG, got '" + text + "'");
+  planning::Pose2 p;
+  p.position_map = {v[0], v[1]};
+  if (v.size() == 3) p.heading_deg = v[2];
+  return p;
+}
 
 PipelineConfig resolve_config(const PipelineCli& cli) {
   PipelineConfig c;
@@ -79,6 +98,7 @@ PipelineConfig resolve_config(const PipelineCli& cli) {
   }
   if (cli.cell_m != 0.0) c.map.voxel.cell_m = cli.cell_m;
   if (cli.no_level) c.map.level.enabled = false;
+  if (cli.start.empty() != cli.goal.empty()) throw UsageError("--start and --goal go together");
   validate(c);
   return c;
 }

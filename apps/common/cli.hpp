@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "config.hpp"
+#include "indoormap/planning/planner.hpp"
 
 namespace indoormap::app {
 
@@ -21,7 +22,13 @@ struct PipelineCli {
   std::vector<std::string> scanners;  ///< "X,Y,Z"
   double cell_m = 0.0;                ///< 0: from config
   bool no_level = false;
+  std::string start;  ///< "X,Y[,DEG]" map frame: plan a route (with goal)
+  std::string goal;   ///< "X,Y[,DEG]"
 };
+
+/// Parses "X,Y" or "X,Y,DEG" (metres, degrees counter-clockwise from +x). Throws UsageError
+/// naming the option.
+planning::Pose2 parse_pose(const std::string& text, const std::string& option);
 
 void add_pipeline_options(CLI::App& app, PipelineCli& cli);
 

@@ -86,6 +86,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("border", "door_probe_m", bd.door_probe_m);
   f("border", "max_open_fraction", bd.max_open_fraction);
   f("border", "max_cells", bd.max_cells);
+  visit_plan(c.plan, f);
 }
 
 std::string axis_name(cloud::UpAxis a) { return a == cloud::UpAxis::kY ? "y" : "z"; }
@@ -163,7 +164,9 @@ void merge_config_file(PipelineConfig& config, const std::string& path) {
     const auto name = sec.first.as<std::string>();
     const auto it = known.find(name);
     if (it == known.end())
-      throw InputError(path, "unknown section '" + name + "' (sections: input, level, voxel, layers, layout, objects, border)",
+      throw InputError(path,
+                       "unknown section '" + name +
+                           "' (sections: input, level, voxel, layers, layout, objects, border, robot, safe_zone, planner)",
                        static_cast<std::size_t>(sec.first.Mark().line + 1));
     if (sec.second.IsNull()) continue;
     if (!sec.second.IsMap())
@@ -228,6 +231,7 @@ void validate(const PipelineConfig& c) {
   require(lo.hanging_max_support >= 0 && lo.hanging_max_support <= 1,
           "layout.hanging_max_support: must be in [0, 1]");
   border::validate(c.border);  // throws UsageError naming border.<key>
+  validate(c.plan);
 }
 
 std::string to_yaml(const PipelineConfig& config) {

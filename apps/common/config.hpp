@@ -1,7 +1,7 @@
 #pragma once
 // The YAML configuration of the pipeline apps. The tree mirrors the parameter structs:
-// input.*, level.*, voxel.*, layers.*, layout.*, objects.*, border.*; defaults are the structs'
-// defaults and are
+// input.*, level.*, voxel.*, layers.*, layout.*, objects.*, border.*, robot.*, safe_zone.*,
+// planner.*; defaults are the structs' defaults and are
 // documented in config/default.yaml. Unknown keys are errors (a typo must not be ignored).
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
@@ -12,6 +12,7 @@
 #include "indoormap/cloud/load.hpp"
 #include "indoormap/layout/pipeline.hpp"
 #include "indoormap/objects/objects.hpp"
+#include "plan_config.hpp"
 
 namespace indoormap::app {
 
@@ -23,6 +24,7 @@ struct PipelineConfig {
   layout::MapParams map;
   objects::ObjectParams objects;
   border::BorderParams border;  ///< room border closure (border.*)
+  PlanConfig plan;  ///< robot.*, safe_zone.*, planner.*: the route of --start / --goal
 };
 
 /// Reads a YAML file over the defaults. Throws InputError naming the file, key and line.

@@ -11,6 +11,7 @@
 #include "indoormap/io/map_io.hpp"
 #include "objects_outputs.hpp"
 #include "pipeline_run.hpp"
+#include "route_outputs.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
@@ -28,7 +29,8 @@ int run(int argc, char** argv) {
       "  pcd-to-map ../shared/data/jacobs-thermocolorlab --scans 0-8 -o out/jacobs\n"
       "  pcd-to-map scan.xyz --unit mm --up-axis y --scanner 0,0,1.5 -o out/scan\n"
       "  pcd-to-map --print-config > my.yaml; pcd-to-map -c my.yaml room.ply -o out\n"
-      "Exit codes: 0 done, 2 bad usage or bad input, 1 other failure.");
+      "  pcd-to-map clouds/office/cloud.pcd --start 1,1,0 --goal 4,3 -o out   # adds a route\n"
+      "Exit codes: 0 done, 2 bad usage or bad input, 3 no route (with --start/--goal), 1 other failure.");
   app::PipelineCli cli;
   app::add_pipeline_options(cli_app, cli);
   try {
@@ -62,10 +64,14 @@ int run(int argc, char** argv) {
   for (auto& f : app::write_object_outputs(out, m, objs, what)) outputs.push_back(f);
 
   json border_block = app::write_border_outputs(out, m, cfg.border);
+  const auto route = app::write_route_outputs(out, cli, cfg, m.layout.layout, m.geometry);  // --start/--goal
+  if (route)
+    for (const auto& f : route->summary.value("outputs", json::array())) outputs.push_back(f.get<std::string>());
   for (const auto& f : border_block["outputs"]) outputs.push_back(f.get<std::string>());
 
   json summary = app::summary_json("pcd-to-map", run, cfg);
   summary["border"] = border_block;
+  summary["route"] = route ? route->summary : json(nullptr);
   summary["objects"] = {{"count", objs.objects.size()}, {"file", "objects.json"}};
   summary["timings_ms"]["objects"] = objects_ms;
   summary["timings_ms"]["write"] =
@@ -78,7 +84,8 @@ int run(int argc, char** argv) {
 
   app::report("pcd-to-map", run);
   std::cout << "outputs written to " << out.string() << "\n";
-  return 0;
+  if (route && !route->found) std::cerr << "pcd-to-map: " << route->message << "\n";
+  return route && !route->found ? static_cast<int>(ExitCode::kNoResult) : 0;
 }
 
 }  // namespace

@@ -181,4 +181,27 @@ RosMap read_ros_map(const fs::path& yaml_path, std::int64_t max_cells) {
   return m;
 }
 
+RosMap read_plain_map(const fs::path& image, double resolution_m, int free_min,
+                      std::int64_t max_cells) {
+  if (!(resolution_m > 0) || !std::isfinite(resolution_m))
+    throw UsageError("map resolution must be a positive number of metres per pixel");
+  if (free_min < 0 || free_min > 255) throw UsageError("free_min must be in [0, 255]");
+  const auto [w, h] = image_size(image);
+  if (w * h > max_cells)
+    throw BudgetError(image.string() + ": map of " + std::to_string(w) + " x " + std::to_string(h) +
+                      " cells is above the budget of " + std::to_string(max_cells) + " cells");
+  cv::Mat img = cv::imread(image.string(), cv::IMREAD_GRAYSCALE);
+  if (img.empty() || img.cols != w || img.rows != h)
+    throw InputError(image.string(), "cannot decode the map image");
+  RosMap m;
+  m.meta.image = image.filename().string();
+  m.meta.resolution_m = resolution_m;
+  m.geometry = GridGeometry({0.0, 0.0}, resolution_m, static_cast<int>(w), static_cast<int>(h));
+  m.cells = Grid<Cell>(static_cast<int>(w), static_cast<int>(h), Cell::kWall);
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c)
+      if (img.at<std::uint8_t>(static_cast<int>(h - 1 - r), c) >= free_min) m.cells.at(c, r) = Cell::kFree;
+  return m;
+}
+
 }  // namespace indoormap::io

@@ -42,6 +42,12 @@ struct RosMap {
 /// naming the file and key on malformed input. max_cells bounds the image size.
 RosMap read_ros_map(const std::filesystem::path& yaml_path, std::int64_t max_cells = 100'000'000);
 
+/// Reads a plain building-map image (PNG / PGM, e.g. the room-segmentation maps): grey level
+/// >= free_min is free, anything darker occupied (kWall). North up; origin (0, 0) at the
+/// lower-left corner; resolution_m metres per pixel. Throws InputError / BudgetError.
+RosMap read_plain_map(const std::filesystem::path& image, double resolution_m, int free_min = 250,
+                      std::int64_t max_cells = 100'000'000);
+
 /// Writes JSON (2-space indent) atomically.
 void write_json(const std::filesystem::path& path, const nlohmann::json& j);
 

@@ -1,0 +1,101 @@
+#include "plan_config.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <fstream>
+#include <limits>
+#include <map>
+#include <set>
+#include <type_traits>
+
+#include "indoormap/core/errors.hpp"
+
+namespace indoormap::app {
+
+void merge_plan_config_file(PlanConfig& config, const std::string& path) {
+  YAML::Node root;
+  try {
+    std::ifstream in(path);
+    if (!in) throw InputError(path, "cannot open the config file");
+    root = YAML::Load(in);
+  } catch (const YAML::Exception& e) {
+    throw InputError(path, "invalid YAML: " + e.msg, static_cast<std::size_t>(e.mark.line + 1));
+  }
+  if (root.IsNull()) return;  // an empty file means "all defaults"
+  if (!root.IsMap()) throw InputError(path, "the config must be a mapping of sections");
+  std::map<std::string, std::set<std::string>> known;
+  visit_plan(config, [&](const char* s, const char* k, auto&) { known[s].insert(k); });
+  for (const auto& sec : root) {
+    const auto name = sec.first.as<std::string>();
+    const auto it = known.find(name);
+    if (it == known.end())
+      throw InputError(path, "unknown section '" + name + "' (sections: robot, safe_zone, planner)",
+                       static_cast<std::size_t>(sec.first.Mark().line + 1));
+    if (sec.second.IsNull()) continue;
+    if (!sec.second.IsMap())
+      throw InputError(path, "section '" + name + "' must be a mapping",
+                       static_cast<std::size_t>(sec.second.Mark().line + 1));
+    for (const auto& kv : sec.second) {
+      const auto key = kv.first.as<std::string>();
+      if (!it->second.count(key))
+        throw InputError(path, "unknown key '" + name + "." + key + "'",
+                         static_cast<std::size_t>(kv.first.Mark().line + 1));
+    }
+  }
+  visit_plan(config, [&](const char* s, const char* k, auto& v) {
+    using T = std::decay_t<decltype(v)>;
+    const YAML::Node sec = root[s];
+    if (!sec) return;
+    const YAML::Node n = sec[k];
+    if (!n) return;
+    const std::string full = std::string(s) + "." + k;
+    auto fail = [&](const std::string& what) {
+      throw InputError(path, "key '" + full + "': " + what,
+                       static_cast<std::size_t>(n.Mark().line + 1));
+    };
+    try {
+      if constexpr (std::is_same_v<T, bool>) {
+        v = n.as<bool>();
+      } else if constexpr (std::is_integral_v<T>) {
+        const auto d = n.as<long double>();
+        if (d < static_cast<long double>(std::numeric_limits<T>::min()) ||
+            d > static_cast<long double>(std::numeric_limits<T>::max()) ||
+            d != static_cast<long double>(static_cast<long long>(d)))
+          fail("expected an integer in range");
+        v = static_cast<T>(d);
+      } else {
+        v = n.as<T>();
+      }
+    } catch (const YAML::Exception&) {
+      fail(std::is_same_v<T, bool> ? "expected true or false" : "expected a number");
+    }
+  });
+}
+
+void validate(const PlanConfig& c) {
+  planning::validate(c.robot, c.planner);
+}
+
+std::string to_yaml(const PlanConfig& config) {
+  YAML::Emitter out;
+  out << YAML::BeginMap;
+  std::string open;
+  visit_plan(config, [&](const char* s, const char* k, const auto& v) {
+    if (open != s) {
+      if (!open.empty()) out << YAML::EndMap;
+      out << YAML::Key << s << YAML::Value << YAML::BeginMap;
+      open = s;
+    }
+    out << YAML::Key << k << YAML::Value << v;
+  });
+  out << YAML::EndMap << YAML::EndMap;
+  return std::string(out.c_str()) + "\n";
+}
+
+nlohmann::json to_json(const PlanConfig& config) {
+  nlohmann::json j = nlohmann::json::object();
+  visit_plan(config, [&](const char* s, const char* k, const auto& v) { j[s][k] = v; });
+  return j;
+}
+
+}  // namespace indoormap::app

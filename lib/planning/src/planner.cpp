@@ -1,0 +1,535 @@
+#include "indoormap/planning/planner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <numbers>
+#include <queue>
+#include <sstream>
+
+namespace indoormap::planning {
+
+namespace {
+
+constexpr std::array<CellIndex, 8> kEight = {
+    {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}}};
+
+std::size_t idx(int width, CellIndex c) {
+  return static_cast<std::size_t>(c.row) * static_cast<std::size_t>(width) +
+         static_cast<std::size_t>(c.col);
+}
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s.precision(3);
+  s << std::fixed << v;
+  return s.str();
+}
+
+std::string point_str(const Eigen::Vector2d& p) {
+  std::ostringstream s;
+  s.precision(3);
+  s << std::fixed << "(" << p.x() << ", " << p.y() << ")";
+  return s.str();
+}
+
+/// Visits every end point of the template visible from `from`: its whole supercover line lies on
+/// cells where passable(flat index) holds. One linear pass over the prefix tree; a blocked cell
+/// skips its subtree (every line through it).
+template <class Passable, class OnEnd>
+void for_each_visible(const NeighbourhoodTemplate& t, int width, int height, CellIndex from,
+                      Passable&& passable, OnEnd&& on_end) {
+  const std::size_t n = t.dx.size();
+  std::size_t i = 0;
+  while (i < n) {
+    const int c = from.col + t.dx[i], r = from.row + t.dy[i];
+    if (c < 0 || r < 0 || c >= width || r >= height ||
+        !passable(static_cast<std::size_t>(r) * static_cast<std::size_t>(width) +
+                  static_cast<std::size_t>(c))) {
+      i = static_cast<std::size_t>(t.skip[i]);
+      continue;
+    }
+    if (t.end_point[i] >= 0) on_end(t.end_point[i]);
+    ++i;
+  }
+}
+
+/// End point id of an offset, or -1 when it is not in the template.
+std::int32_t end_point_id(const NeighbourhoodTemplate& t, const std::vector<std::int32_t>& id_of,
+                          CellIndex off) {
+  const int r = t.radius_cells, side = 2 * r + 1;
+  if (std::abs(off.col) > r || std::abs(off.row) > r) return -1;
+  return id_of[static_cast<std::size_t>(off.row + r) * side + (off.col + r)];
+}
+
+std::vector<std::int32_t> offset_index(const NeighbourhoodTemplate& t) {
+  const int r = t.radius_cells, side = 2 * r + 1;
+  std::vector<std::int32_t> id_of(static_cast<std::size_t>(side) * side, -1);
+  for (std::size_t i = 0; i < t.end_points.size(); ++i) {
+    const auto& o = t.end_points[i].offset;
+    id_of[static_cast<std::size_t>(o.row + r) * side + (o.col + r)] = static_cast<std::int32_t>(i);
+  }
+  return id_of;
+}
+
+double normalize_deg(double a) {
+  a = std::fmod(a, 360.0);
+  if (a <= -180.0) a += 360.0;
+  if (a > 180.0) a -= 360.0;
+  return a;
+}
+
+/// The paper's trajectory scenario generation (see the header and docs/plan-route.md). Returns
+/// the cell sequences of every route that reached the goal, in the order found.
+std::vector<std::vector<CellIndex>> paper_search(const Grid<SafeCell>& safe,
+                                                 const Grid<std::int32_t>& wave,
+                                                 const Grid<std::uint8_t>& region, CellIndex start,
+                                                 CellIndex goal, const NeighbourhoodTemplate& t,
+                                                 const PlannerParams& p, std::int64_t& expanded) {
+  const int w = safe.width, h = safe.height;
+  const auto id_of = offset_index(t);
+  // Virgin 8-neighbours of every region cell (neighbours outside M_tb).
+  Grid<std::uint8_t> virgin(w, h, 0);
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) {
+      if (!region.at(c, r)) continue;
+      int n = 0;
+      for (const auto& d : kEight) {
+        const int cc = c + d.col, rr = r + d.row;
+        if (!region.contains(cc, rr) || !region.at(cc, rr)) ++n;
+      }
+      virgin.at(c, r) = static_cast<std::uint8_t>(n);
+    }
+  struct Node {
+    CellIndex cell;
+    std::int32_t parent;
+    int moves;
+  };
+  std::vector<Node> nodes{{start, -1, 0}};
+  std::deque<std::int32_t> queue{0};
+  std::vector<std::uint8_t> enqueued(safe.size(), 0);
+  enqueued[idx(w, start)] = 1;
+  std::vector<std::uint32_t> visible(t.end_points.size(), 0);
+  std::vector<std::uint32_t> passed(safe.size(), 0), unique(safe.size(), 0);
+  std::uint32_t gen = 0;
+  std::vector<std::int32_t> ends, ray_passed;
+  int best_end = std::numeric_limits<int>::max();
+  expanded = 0;
+
+  while (!queue.empty()) {
+    const std::int32_t ni = queue.front();
+    queue.pop_front();
+    const Node node = nodes[static_cast<std::size_t>(ni)];
+    if (node.cell == goal) {
+      ends.push_back(ni);
+      best_end = std::min(best_end, node.moves);
+      continue;
+    }
+    // Paths "significantly" longer than the best found are not explored further.
+    if (best_end != std::numeric_limits<int>::max() && node.moves + 1 > best_end + p.extra_moves)
+      continue;
+    if (++expanded > p.max_nodes) break;
+    ++gen;
+    const auto& wv = wave.data;
+    const auto& rg = region.data;
+    // Safety of a move is judged on the safe zone (the whole supercover must be kSafe); the
+    // region M_tb only bounds where rays may go and end (below). Requiring the supercover itself
+    // to lie in M_tb would block every diagonal through a one-cell-wide band of the region.
+    const auto& sd = safe.data;
+    for_each_visible(
+        t, w, h, node.cell, [&](std::size_t i) { return sd[i] == SafeCell::kSafe; },
+        [&](std::int32_t e) { visible[static_cast<std::size_t>(e)] = gen; });
+    // A straight move to the goal ends the path here: no other move from this node is considered.
+    const auto goal_id =
+        end_point_id(t, id_of, {goal.col - node.cell.col, goal.row - node.cell.row});
+    if (goal_id >= 0 && visible[static_cast<std::size_t>(goal_id)] == gen) {
+      nodes.push_back({goal, ni, node.moves + 1});
+      queue.push_back(static_cast<std::int32_t>(nodes.size() - 1));
+      continue;
+    }
+    const std::int32_t here = wv[idx(w, node.cell)];
+    std::int32_t node_max = -1;
+    std::vector<std::int32_t> node_opt;
+    for (const auto& ray : t.rays) {
+      std::int32_t last = -1;
+      bool abandoned = false;
+      ray_passed.clear();
+      for (const std::int32_t e : ray) {
+        if (visible[static_cast<std::size_t>(e)] != gen) break;  // blocked: stop before it
+        const auto& o = t.end_points[static_cast<std::size_t>(e)].offset;
+        const CellIndex c{node.cell.col + o.col, node.cell.row + o.row};
+        if (!rg[idx(w, c)]) break;   // virgin area (outside M_tb): stop before it
+        if (wv[idx(w, c)] < here) {  // the wave index falls: this turning angle leads back
+          abandoned = true;
+          break;
+        }
+        if (last >= 0) ray_passed.push_back(last);  // passed over on the way to e
+        last = e;
+      }
+      if (abandoned || last < 0) continue;
+      // The passability matrix records the points this ray passes over. Only rays that are kept
+      // count: a ray abandoned further on (the wave index falls) offers no move past them.
+      for (const std::int32_t q : ray_passed) {
+        const auto& qo = t.end_points[static_cast<std::size_t>(q)].offset;
+        passed[idx(w, {node.cell.col + qo.col, node.cell.row + qo.row})] = gen;
+      }
+      const auto& ep = t.end_points[static_cast<std::size_t>(last)];
+      if (ep.length_m < p.d_min_m) continue;  // too short for an intermediate move
+      const CellIndex c{node.cell.col + ep.offset.col, node.cell.row + ep.offset.row};
+      const std::size_t ci = idx(w, c);
+      if (unique[ci] == gen) continue;
+      if (virgin.data[ci] >= 5) {
+        node_opt.push_back(last);
+        unique[ci] = gen;
+      }
+      if (node_max < 0) {
+        node_max = last;
+        unique[ci] = gen;
+      } else {
+        const auto& mp = t.end_points[static_cast<std::size_t>(node_max)];
+        const std::int32_t wm =
+            wv[idx(w, {node.cell.col + mp.offset.col, node.cell.row + mp.offset.row})];
+        if (wv[ci] > wm || (wv[ci] == wm && ep.length_m < mp.length_m)) {
+          node_max = last;
+          unique[ci] = gen;
+        }
+      }
+    }
+    if (node_max >= 0) node_opt.push_back(node_max);
+    for (const std::int32_t e : node_opt) {
+      const auto& o = t.end_points[static_cast<std::size_t>(e)].offset;
+      const CellIndex c{node.cell.col + o.col, node.cell.row + o.row};
+      const std::size_t ci = idx(w, c);
+      if (passed[ci] == gen || enqueued[ci]) continue;
+      enqueued[ci] = 1;
+      nodes.push_back({c, ni, node.moves + 1});
+      queue.push_back(static_cast<std::int32_t>(nodes.size() - 1));
+    }
+  }
+  std::vector<std::vector<CellIndex>> routes;
+  for (const std::int32_t e : ends) {
+    std::vector<CellIndex> cells;
+    for (std::int32_t i = e; i >= 0; i = nodes[static_cast<std::size_t>(i)].parent)
+      cells.push_back(nodes[static_cast<std::size_t>(i)].cell);
+    std::reverse(cells.begin(), cells.end());
+    routes.push_back(std::move(cells));
+  }
+  return routes;
+}
+
+void require(bool ok, const std::string& what) {
+  if (!ok) throw UsageError("invalid parameter " + what);
+}
+
+}  // namespace
+
+void validate(const RobotParams& robot, const PlannerParams& p) {
+  require(std::isfinite(robot.width_m) && robot.width_m > 0, "robot.width_m: must be > 0");
+  require(std::isfinite(robot.length_m) && robot.length_m > 0, "robot.length_m: must be > 0");
+  require(std::isfinite(robot.extra_m) && robot.extra_m >= 0, "robot.extra_m: must be >= 0");
+  require(std::isfinite(p.d_max_m) && p.d_max_m > 0, "planner.d_max_m: must be > 0");
+  require(std::isfinite(p.d_min_m) && p.d_min_m >= 0 && p.d_min_m <= p.d_max_m,
+          "planner.d_min_m: must be in [0, planner.d_max_m]");
+  require(p.paper_rules || p.exact_search,
+          "planner: paper_rules and exact_search cannot both be false");
+  require(p.max_routes >= 1 && p.max_routes <= 1000, "planner.max_routes: must be in [1, 1000]");
+  require(p.extra_moves >= 0 && p.extra_moves <= 10, "planner.extra_moves: must be in [0, 10]");
+  require(p.max_nodes >= 1, "planner.max_nodes: must be >= 1");
+}
+
+Templates make_templates(const RobotParams& robot, const PlannerParams& params, double cell_m) {
+  validate(robot, params);
+  return {make_disk_template(d_save_m(robot), cell_m),
+          make_neighbourhood_template(params.d_max_m, cell_m)};
+}
+
+Grid<std::int32_t> lee_wave(const Grid<SafeCell>& safe, CellIndex start,
+                            std::optional<CellIndex> goal) {
+  const int w = safe.width, h = safe.height;
+  Grid<std::int32_t> wave(w, h, -1);
+  if (!safe.contains(start.col, start.row) || safe.at(start) != SafeCell::kSafe) return wave;
+  std::vector<CellIndex> queue;
+  queue.reserve(1024);
+  queue.push_back(start);
+  wave.at(start) = 0;
+  std::int32_t stop = std::numeric_limits<std::int32_t>::max();
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const CellIndex c = queue[head];
+    const std::int32_t k = wave.at(c);
+    if (k >= stop) continue;  // cells beyond the goal's index are not mapped out
+    for (const auto& d : kEight) {
+      const CellIndex n{c.col + d.col, c.row + d.row};
+      if (n.col < 0 || n.row < 0 || n.col >= w || n.row >= h) continue;
+      std::int32_t& v = wave.at(n);
+      if (v >= 0 || safe.at(n) != SafeCell::kSafe) continue;
+      // No corner cutting: a diagonal step needs both side cells safe, as the supercover of a
+      // diagonal move does; otherwise the region could lead through a gap no move can take.
+      if (d.col != 0 && d.row != 0 &&
+          (safe.at(c.col + d.col, c.row) != SafeCell::kSafe ||
+           safe.at(c.col, c.row + d.row) != SafeCell::kSafe))
+        continue;
+      v = k + 1;
+      if (goal && n == *goal) stop = v;
+      queue.push_back(n);
+    }
+  }
+  return wave;
+}
+
+Grid<std::uint8_t> trajectory_region(const Grid<std::int32_t>& wave, CellIndex start,
+                                     CellIndex goal) {
+  Grid<std::uint8_t> region(wave.width, wave.height, 0);
+  if (!wave.contains(goal.col, goal.row) || wave.at(goal) < 0 ||
+      !wave.contains(start.col, start.row))
+    return region;
+  // Depth-first from the goal down the wave: a cell belongs to a minimal-index path iff it is
+  // reached by steps that each lower the index by one (every such chain ends at the start, the
+  // only cell with index 0). The stack holds cells whose predecessors are still to be examined.
+  std::vector<CellIndex> stack{goal};
+  region.at(goal) = 1;
+  while (!stack.empty()) {
+    const CellIndex c = stack.back();
+    stack.pop_back();
+    const std::int32_t k = wave.at(c);
+    if (k == 0) continue;
+    for (const auto& d : kEight) {
+      const CellIndex n{c.col + d.col, c.row + d.row};
+      if (!wave.contains(n.col, n.row) || wave.at(n) != k - 1 || region.at(n)) continue;
+      region.at(n) = 1;
+      stack.push_back(n);
+    }
+  }
+  return region;
+}
+
+ExactResult exact_min_moves(const Grid<SafeCell>& safe, CellIndex start, CellIndex goal,
+                            const NeighbourhoodTemplate& t, const PlannerParams& p, int bound) {
+  ExactResult res;
+  const int w = safe.width, h = safe.height;
+  if (!safe.contains(start.col, start.row) || !safe.contains(goal.col, goal.row) ||
+      safe.at(start) != SafeCell::kSafe || safe.at(goal) != SafeCell::kSafe) {
+    return res;
+  }
+  if (start == goal) {
+    res.cells = std::vector<CellIndex>{start};
+    return res;
+  }
+  const double cell_m = t.cell_m;
+  // Admissible and consistent: a move covers at most d_max, and a cell other than the goal needs
+  // at least one more move. Length: the straight-line distance.
+  auto h_moves = [&](CellIndex c) {
+    if (c == goal) return 0;
+    const double d = std::hypot(c.col - goal.col, c.row - goal.row) * cell_m;
+    return std::max(1, static_cast<int>(std::ceil(d / p.d_max_m - 1e-9)));
+  };
+  auto h_len = [&](CellIndex c) { return std::hypot(c.col - goal.col, c.row - goal.row) * cell_m; };
+  const std::size_t n = safe.size();
+  std::vector<std::int32_t> g_moves(n, std::numeric_limits<std::int32_t>::max());
+  std::vector<double> g_len(n, std::numeric_limits<double>::infinity());
+  std::vector<std::int32_t> parent(n, -1);
+  std::vector<std::uint8_t> closed(n, 0);
+  struct Item {
+    int f_moves;
+    double f_len;
+    std::int32_t cell;
+    bool operator>(const Item& o) const {
+      return f_moves != o.f_moves ? f_moves > o.f_moves : f_len > o.f_len;
+    }
+  };
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+  const auto si = static_cast<std::int32_t>(idx(w, start));
+  const auto gi = static_cast<std::int32_t>(idx(w, goal));
+  g_moves[static_cast<std::size_t>(si)] = 0;
+  g_len[static_cast<std::size_t>(si)] = 0;
+  open.push({h_moves(start), h_len(start), si});
+  const auto& sd = safe.data;
+  while (!open.empty()) {
+    const Item it = open.top();
+    open.pop();
+    const auto ci = static_cast<std::size_t>(it.cell);
+    if (closed[ci]) continue;
+    closed[ci] = 1;
+    if (it.cell == gi) break;
+    if (++res.nodes > p.max_nodes) {
+      res.complete = false;
+      return res;
+    }
+    const CellIndex c{static_cast<int>(ci % static_cast<std::size_t>(w)),
+                      static_cast<int>(ci / static_cast<std::size_t>(w))};
+    const int gm = g_moves[ci] + 1;
+    const double gl = g_len[ci];
+    for_each_visible(
+        t, w, h, c, [&](std::size_t i) { return sd[i] == SafeCell::kSafe; },
+        [&](std::int32_t e) {
+          const auto& ep = t.end_points[static_cast<std::size_t>(e)];
+          const CellIndex nc{c.col + ep.offset.col, c.row + ep.offset.row};
+          const std::size_t ni = idx(w, nc);
+          // Every move but the last is at least D_min long.
+          if (static_cast<std::int32_t>(ni) != gi && ep.length_m < p.d_min_m) return;
+          if (closed[ni]) return;
+          // A route of `bound` moves is known: only strictly fewer moves can improve on it (the
+          // length tie-break among equal moves is left to the known route).
+          if (gm + h_moves(nc) >= bound) return;
+          const double nl = gl + ep.length_m;
+          if (gm > g_moves[ni] || (gm == g_moves[ni] && nl >= g_len[ni])) return;
+          g_moves[ni] = gm;
+          g_len[ni] = nl;
+          parent[ni] = it.cell;
+          open.push({gm + h_moves(nc), nl + h_len(nc), static_cast<std::int32_t>(ni)});
+        });
+  }
+  if (!closed[static_cast<std::size_t>(gi)]) return res;  // complete, and no route
+  std::vector<CellIndex> cells;
+  for (std::int32_t i = gi; i >= 0; i = parent[static_cast<std::size_t>(i)])
+    cells.push_back({i % w, i / w});
+  std::reverse(cells.begin(), cells.end());
+  res.cells = std::move(cells);
+  return res;
+}
+
+Route make_route(const std::vector<CellIndex>& cells, const GridGeometry& geometry,
+                 std::optional<double> start_heading_deg, std::optional<double> goal_heading_deg) {
+  Route route;
+  route.cells = cells;
+  for (const auto& c : cells) route.waypoints_map.push_back(geometry.center_of(c));
+  std::optional<double> heading = start_heading_deg;
+  for (std::size_t i = 1; i < cells.size(); ++i) {
+    const Eigen::Vector2d d = route.waypoints_map[i] - route.waypoints_map[i - 1];
+    const double dir = std::atan2(d.y(), d.x()) * 180.0 / std::numbers::pi;
+    // Without a start heading the robot is taken to face its first move.
+    const double turn = heading ? normalize_deg(dir - *heading) : 0.0;
+    route.commands.push_back({turn, d.norm()});
+    route.length_m += d.norm();
+    heading = dir;
+  }
+  route.moves = static_cast<int>(route.commands.size());
+  if (goal_heading_deg) {
+    const double turn = heading ? normalize_deg(*goal_heading_deg - *heading) : 0.0;
+    if (std::abs(turn) > 1e-6) route.commands.push_back({turn, 0.0});
+  }
+  for (const auto& c : route.commands)
+    if (std::abs(c.turn_deg) > 1e-6) ++route.turns;
+  return route;
+}
+
+namespace {
+
+CellIndex checked_cell(const Grid<SafeCell>& safe, const GridGeometry& geo, const Pose2& pose,
+                       const std::string& which) {
+  const auto& p = pose.position_map;
+  if (!p.allFinite()) throw OutsideMapError(which + " is not a finite point");
+  const CellIndex c = geo.cell_of(p);
+  if (!geo.contains(c)) {
+    const Eigen::Vector2d lo = geo.origin_m();
+    const Eigen::Vector2d hi = lo + Eigen::Vector2d(geo.width(), geo.height()) * geo.cell_m();
+    throw OutsideMapError(which + " " + point_str(p) + " m is outside the map (x in [" +
+                          fmt(lo.x()) + ", " + fmt(hi.x()) + "), y in [" + fmt(lo.y()) + ", " +
+                          fmt(hi.y()) + "))");
+  }
+  const SafeCell s = safe.at(c);
+  if (s == SafeCell::kSafe) return c;
+  double best = std::numeric_limits<double>::infinity();
+  CellIndex nearest{-1, -1};
+  for (int r = 0; r < safe.height; ++r)
+    for (int col = 0; col < safe.width; ++col) {
+      if (safe.at(col, r) != SafeCell::kSafe) continue;
+      const double d = (geo.center_of({col, r}) - p).norm();
+      if (d < best) best = d, nearest = {col, r};
+    }
+  const std::string where = s == SafeCell::kObstacle ? "on an obstacle"
+                            : s == SafeCell::kOutside
+                                ? "outside the room (unknown area)"
+                                : "in the unsafe zone (closer than d_save to an obstacle)";
+  if (nearest.col < 0)
+    throw UnsafePointError(
+        which + " " + point_str(p) + " m is " + where + ", and the map has no safe cell at all",
+        -1.0);
+  throw UnsafePointError(which + " " + point_str(p) + " m is " + where +
+                             ": the nearest safe cell is " + fmt(best) + " m away at " +
+                             point_str(geo.center_of(nearest)),
+                         best);
+}
+
+}  // namespace
+
+PlanResult plan_routes(const Grid<SafeCell>& safe, const GridGeometry& geometry, const Pose2& start,
+                       const Pose2& goal, const Templates& templates, const PlannerParams& params) {
+  if (params.d_min_m < 0 || params.d_min_m > params.d_max_m || !(params.d_max_m > 0))
+    throw UsageError(
+        "invalid parameter planner.d_min_m / d_max_m: need 0 <= d_min_m <= d_max_m, d_max_m > 0");
+  require(params.paper_rules || params.exact_search,
+          "planner: paper_rules and exact_search cannot both be false");
+  require(params.max_routes >= 1, "planner.max_routes: must be >= 1");
+  if (safe.width != geometry.width() || safe.height != geometry.height())
+    throw UsageError("plan_routes: safe zone and geometry differ in size");
+  const auto& t = templates.neighbourhood;
+  if (std::abs(t.cell_m - geometry.cell_m()) > 1e-9 * geometry.cell_m() ||
+      std::abs(t.d_max_m - params.d_max_m) > 1e-12)
+    throw UsageError(
+        "plan_routes: the neighbourhood template was built for another cell size or d_max_m");
+  PlanResult res;
+  res.start_cell = checked_cell(safe, geometry, start, "start");
+  res.goal_cell = checked_cell(safe, geometry, goal, "goal");
+  res.wave = lee_wave(safe, res.start_cell, res.goal_cell);
+  if (res.wave.at(res.goal_cell) < 0) {
+    res.region = Grid<std::uint8_t>(safe.width, safe.height, 0);
+    res.message = "no route: the goal is not connected to the start through the safe zone";
+    return res;
+  }
+  res.region = trajectory_region(res.wave, res.start_cell, res.goal_cell);
+
+  std::vector<std::pair<std::vector<CellIndex>, std::string>> found;
+  if (params.paper_rules) {
+    auto routes = paper_search(safe, res.wave, res.region, res.start_cell, res.goal_cell, t, params,
+                               res.paper_nodes);
+    for (auto& r : routes) {
+      const int m = static_cast<int>(r.size()) - 1;
+      if (res.paper_best_moves < 0 || m < res.paper_best_moves) res.paper_best_moves = m;
+      found.emplace_back(std::move(r), "paper");
+    }
+    if (res.start_cell == res.goal_cell)
+      found.emplace_back(std::vector<CellIndex>{res.start_cell}, "paper");
+  }
+  if (params.exact_search) {
+    // The paper's best route bounds the search: it only has to look for fewer moves.
+    const int bound =
+        res.paper_best_moves >= 0 ? res.paper_best_moves : std::numeric_limits<int>::max();
+    ExactResult ex = exact_min_moves(safe, res.start_cell, res.goal_cell, t, params, bound);
+    res.exact_complete = ex.complete;
+    res.exact_nodes = ex.nodes;
+    if (ex.cells) {
+      res.exact_best_moves = static_cast<int>(ex.cells->size()) - 1;
+      found.emplace_back(std::move(*ex.cells), "exact");
+    } else if (ex.complete && res.paper_best_moves >= 0) {
+      res.exact_best_moves = res.paper_best_moves;  // proven: no route with fewer moves exists
+    }
+  }
+  for (auto& [cells, source] : found) {
+    Route r = make_route(cells, geometry, start.heading_deg, goal.heading_deg);
+    r.source = source;
+    const bool dup = std::any_of(res.routes.begin(), res.routes.end(),
+                                 [&](const Route& o) { return o.cells == r.cells; });
+    if (!dup) res.routes.push_back(std::move(r));
+  }
+  std::stable_sort(res.routes.begin(), res.routes.end(), [](const Route& a, const Route& b) {
+    if (a.moves != b.moves) return a.moves < b.moves;
+    if (std::abs(a.length_m - b.length_m) > 1e-9) return a.length_m < b.length_m;
+    return a.turns < b.turns;
+  });
+  if (static_cast<int>(res.routes.size()) > params.max_routes)
+    res.routes.resize(static_cast<std::size_t>(params.max_routes));
+  if (res.routes.empty()) {
+    res.message =
+        params.exact_search && !res.exact_complete
+            ? "no route found within planner.max_nodes expanded nodes"
+            : "no route: the goal is connected to the start, but not by straight moves of " +
+                  fmt(params.d_min_m) + " to " + fmt(params.d_max_m) + " m through the safe zone";
+  } else if (params.paper_rules && params.exact_search && res.exact_best_moves >= 0 &&
+             (res.paper_best_moves < 0 || res.exact_best_moves < res.paper_best_moves)) {
+    res.message = "the exact search found a route with fewer moves than the paper's rules";
+  }
+  return res;
+}
+
+}  // namespace indoormap::planning
