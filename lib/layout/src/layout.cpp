@@ -47,24 +47,35 @@ std::string fmt_xy(const Eigen::Vector2d& p) {
   return s.str();
 }
 
-}  // namespace
+Grid<std::uint8_t> obstacles_of(const Grid<std::uint8_t>& walls, const Grid<std::uint8_t>& furniture) {
+  Grid<std::uint8_t> o(walls.width, walls.height, 0);
+  for (std::size_t i = 0; i < o.size(); ++i) o.data[i] = walls.data[i] | furniture.data[i];
+  return o;
+}
 
-namespace {
-
-// The cells of hanging wall-band components, and their descriptions.
+// The cells of hanging wall-band components, and their descriptions. A candidate must lie inside
+// the room: no cell within two cells of it may be outside `inside` (the passage area), so the
+// wall above a window (nothing below it either) is not taken for a lamp.
 Grid<std::uint8_t> hanging_mask(const Grid<std::uint8_t>& walls, const Grid<std::uint8_t>& support,
-                                double cell_m, const LayoutParams& params,
-                                std::vector<HangingObject>* objects) {
+                                const Grid<std::uint8_t>& inside, double cell_m,
+                                const LayoutParams& params, std::vector<HangingObject>* objects) {
   Grid<std::uint8_t> mask(walls.width, walls.height, 0);
   if (walls.width == 0 || walls.height == 0) return mask;
   Grid<std::uint8_t> wcopy = walls;
   cv::Mat labels, stats, centroids;
   const int n = cv::connectedComponentsWithStats(as_mat(wcopy), labels, stats, centroids, 8, CV_32S);
   std::vector<std::int64_t> supported(static_cast<std::size_t>(n), 0);
+  std::vector<std::uint8_t> at_boundary(static_cast<std::size_t>(n), 0);
   for (int r = 0; r < walls.height; ++r)
     for (int c = 0; c < walls.width; ++c) {
       const int lab = labels.at<int>(r, c);
       if (lab == 0) continue;
+      for (int dr = -2; dr <= 2 && !at_boundary[lab]; ++dr)
+        for (int dc = -2; dc <= 2; ++dc)
+          if (!inside.contains(c + dc, r + dr) || !inside.at(c + dc, r + dr)) {
+            at_boundary[lab] = 1;
+            break;
+          }
       bool sup = false;
       for (int dr = -1; dr <= 1 && !sup; ++dr)
         for (int dc = -1; dc <= 1 && !sup; ++dc)
@@ -75,7 +86,7 @@ Grid<std::uint8_t> hanging_mask(const Grid<std::uint8_t>& walls, const Grid<std:
   std::vector<std::uint8_t> is_hanging(static_cast<std::size_t>(n), 0);
   for (int lab = 1; lab < n; ++lab) {
     const std::int64_t area = stats.at<int>(lab, cv::CC_STAT_AREA);
-    if (area * cell_area > params.hanging_max_area_m2) continue;
+    if (area * cell_area > params.hanging_max_area_m2 || at_boundary[lab]) continue;
     const int extent = std::max(stats.at<int>(lab, cv::CC_STAT_WIDTH), stats.at<int>(lab, cv::CC_STAT_HEIGHT));
     if (extent * cell_m > params.hanging_max_extent_m) continue;
     if (static_cast<double>(supported[lab]) > params.hanging_max_support * static_cast<double>(area)) continue;
@@ -99,7 +110,7 @@ std::vector<HangingObject> find_hanging(const Grid<std::uint8_t>& walls,
                                         const Grid<std::uint8_t>& support, double cell_m,
                                         const LayoutParams& params) {
   std::vector<HangingObject> out;
-  hanging_mask(walls, support, cell_m, params, &out);
+  hanging_mask(walls, support, passage_area(walls), cell_m, params, &out);
   return out;
 }
 
@@ -144,15 +155,14 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
   if (support && (support->width != w || support->height != h))
     throw Error("build_layout: support map differs in size");
   const Grid<std::uint8_t> hanging =
-      hanging_mask(walls_in, support ? *support : furniture, geo.cell_m(), params, &r.hanging);
+      hanging_mask(walls_in, support ? *support : furniture, passage_area(obstacles_of(walls_in, furniture)),
+                   geo.cell_m(), params, &r.hanging);
   for (std::size_t i = 0; i < walls.size(); ++i) walls.data[i] &= !hanging.data[i];
   // The passes run over the obstacles of both bands. The paper uses the wall band alone, but one
   // gap in it (a window or a glass transom high up in a wall, as in the Jacobs lab) then opens
   // every row or column through the gap, and the whole strip falls outside the room. The lower
   // part of the same wall closes the gap in the furniture band.
-  Grid<std::uint8_t> obstacles(w, h, 0);
-  for (std::size_t i = 0; i < obstacles.size(); ++i) obstacles.data[i] = walls.data[i] | furniture.data[i];
-  r.passage = passage_area(obstacles);
+  r.passage = passage_area(obstacles_of(walls, furniture));
 
   Grid<std::uint8_t> passable(w, h, 0);
   for (std::size_t i = 0; i < passable.size(); ++i)
