@@ -121,7 +121,9 @@ TEST(Layout, ClosingJoinsFragmentsAndPocketsBehindObjectsAreFurniture) {
       "..F........",
       "...........",
   }, 'F');
-  LayoutResult r = build_layout(walls, furn, geo_for(walls), {{2.5, 5.5}});
+  LayoutParams paper;
+  paper.flood_barrier_closing = 0;  // the paper's flood: over the raw furniture map
+  LayoutResult r = build_layout(walls, furn, geo_for(walls), {{2.5, 5.5}}, paper);
   EXPECT_EQ(render(r.layout),
             "WWWWWWWWWWW\n"
             "W.........W\n"
@@ -131,7 +133,7 @@ TEST(Layout, ClosingJoinsFragmentsAndPocketsBehindObjectsAreFurniture) {
             "WFF.......W\n"
             "WFF.......W\n"
             "WWWWWWWWWWW\n");
-  LayoutParams no_closing;
+  LayoutParams no_closing = paper;
   no_closing.furniture_closing_iterations = 0;
   r = build_layout(walls, furn, geo_for(walls), {{2.5, 5.5}}, no_closing);
   EXPECT_EQ(r.layout.at(7, 4), Cell::kFree);  // without the closing the fragments stay apart
@@ -203,6 +205,7 @@ TEST(Layout, FreeSpaceEqualsOpenCvFloodFillOnRandomMaps) {
     furn.at(20, 15) = 0;
     LayoutParams p;
     p.furniture_closing_iterations = 0;
+    p.flood_barrier_closing = 0;
     p.enclosed_max_area_m2 = 0.0;
     LayoutResult res = build_layout(walls, furn, geo_for(walls), {{20.5, 15.5}}, p);
     // Reference: OpenCV 4-connected flood fill over the passable cells.
@@ -246,4 +249,33 @@ TEST(Layout, HangingLampIsNotWallButAPillarIs) {
   LayoutParams off;
   off.hanging_max_area_m2 = 0.0;
   EXPECT_EQ(build_layout(walls, furn, geo, {{0.55, 0.15}}, off, &support).layout.at(2, 3), Cell::kWall);
+}
+
+TEST(Layout, SpeckledCabinetFaceStopsTheFlood) {
+  auto walls = parse({
+      "##########",
+      "#........#",
+      "#........#",
+      "#........#",
+      "#........#",
+      "##########",
+  });
+  // A cabinet against the north wall seen only as a speckled front face: without the barrier
+  // closing the flood leaks through the gaps and the cabinet's body counts as free floor.
+  auto furn = parse({
+      "..........",
+      "..........",
+      ".F.F.F.F..",
+      "..........",
+      "..........",
+      "..........",
+  }, 'F');
+  LayoutResult r = build_layout(walls, furn, geo_for(walls), {{4.5, 1.5}});
+  EXPECT_EQ(r.layout.at(2, 4), Cell::kFurniture);  // behind the face
+  EXPECT_EQ(r.layout.at(2, 3), Cell::kFurniture);  // a gap in the face
+  EXPECT_EQ(r.layout.at(4, 1), Cell::kFree);
+  LayoutParams paper;
+  paper.flood_barrier_closing = 0;
+  r = build_layout(walls, furn, geo_for(walls), {{4.5, 1.5}}, paper);
+  EXPECT_EQ(r.layout.at(2, 4), Cell::kFree);
 }

@@ -59,6 +59,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("layers", "furniture_band_hi_m", ly.furniture_band_hi_m);
   auto& lo = c.map.layout;
   f("layout", "furniture_closing_iterations", lo.furniture_closing_iterations);
+  f("layout", "flood_barrier_closing", lo.flood_barrier_closing);
   f("layout", "enclosed_max_area_m2", lo.enclosed_max_area_m2);
   f("layout", "seed_search_radius_m", lo.seed_search_radius_m);
   f("layout", "hanging_max_area_m2", lo.hanging_max_area_m2);
@@ -71,6 +72,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("objects", "crop_margin_m", ob.crop_margin_m);
   f("objects", "split_height_step_m", ob.split_height_step_m);
   f("objects", "max_vertical_gap_m", ob.max_vertical_gap_m);
+  f("objects", "top_percentile", ob.top_percentile);
   auto& bd = c.border;
   f("border", "dilate_full_size", bd.dilate_full_size);
   f("border", "dilate_cross_size", bd.dilate_cross_size);
@@ -218,6 +220,8 @@ void validate(const PipelineConfig& c) {
   const auto& lo = c.map.layout;
   require(lo.furniture_closing_iterations >= 0 && lo.furniture_closing_iterations <= 20,
           "layout.furniture_closing_iterations: must be in [0, 20]");
+  require(lo.flood_barrier_closing >= 0 && lo.flood_barrier_closing <= 10,
+          "layout.flood_barrier_closing: must be in [0, 10]");
   require(lo.enclosed_max_area_m2 >= 0, "layout.enclosed_max_area_m2: must be >= 0");
   require(lo.seed_search_radius_m >= 0, "layout.seed_search_radius_m: must be >= 0");
   require(lo.hanging_max_area_m2 >= 0, "layout.hanging_max_area_m2: must be >= 0");
@@ -228,6 +232,7 @@ void validate(const PipelineConfig& c) {
   require(ob.crop_margin_m >= 0 && ob.crop_margin_m <= 10, "objects.crop_margin_m: must be in [0, 10]");
   require(ob.split_height_step_m >= 0, "objects.split_height_step_m: must be >= 0 (0: off)");
   require(ob.max_vertical_gap_m > 0, "objects.max_vertical_gap_m: must be > 0");
+  require(ob.top_percentile >= 0 && ob.top_percentile <= 100, "objects.top_percentile: must be in [0, 100]");
   require(lo.hanging_max_support >= 0 && lo.hanging_max_support <= 1,
           "layout.hanging_max_support: must be in [0, 1]");
   border::validate(c.border);  // throws UsageError naming border.<key>

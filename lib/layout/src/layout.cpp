@@ -164,9 +164,18 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
   // part of the same wall closes the gap in the furniture band.
   r.passage = passage_area(obstacles_of(walls, furniture));
 
+  // The flood is stopped by the furniture map closed with a 3x3 square: a scanner sees the front
+  // of a cabinet as a speckled face, and a 4-connected flood would leak through its gaps into the
+  // space behind it. Closing (not dilating) keeps the free space as large as it is.
+  Grid<std::uint8_t> barrier = furniture;
+  if (params.flood_barrier_closing > 0) {
+    const cv::Mat square = cv::getStructuringElement(cv::MORPH_RECT, {3, 3});
+    cv::morphologyEx(as_mat(barrier), as_mat(barrier), cv::MORPH_CLOSE, square, {-1, -1},
+                     params.flood_barrier_closing);
+  }
   Grid<std::uint8_t> passable(w, h, 0);
   for (std::size_t i = 0; i < passable.size(); ++i)
-    passable.data[i] = r.passage.data[i] && !walls.data[i] && !furniture.data[i];
+    passable.data[i] = r.passage.data[i] && !walls.data[i] && !barrier.data[i];
 
   // Seeds: the scanner positions, moved to the nearest passable cell when they fall on an object.
   const int radius = std::max(1, static_cast<int>(std::ceil(params.seed_search_radius_m / geo.cell_m())));
@@ -225,7 +234,7 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
   // that touch them (behind and between objects).
   Grid<std::uint8_t> furn(w, h, 0);
   for (std::size_t i = 0; i < furn.size(); ++i)
-    furn.data[i] = r.passage.data[i] && furniture.data[i] && !walls.data[i];
+    furn.data[i] = r.passage.data[i] && barrier.data[i] && !walls.data[i];
   Grid<std::uint8_t> pockets(w, h, 0);
   for (std::size_t i = 0; i < pockets.size(); ++i)
     pockets.data[i] = passable.data[i] && !free_mask.data[i];
@@ -257,7 +266,7 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
     const cv::Mat cross = cv::getStructuringElement(cv::MORPH_CROSS, {3, 3});
     cv::Mat closed;
     cv::morphologyEx(as_mat(furn), closed, cv::MORPH_CLOSE, cross, {-1, -1},
-                     params.furniture_closing_iterations, cv::BORDER_CONSTANT, 0);
+                     params.furniture_closing_iterations);
     for (int row = 0; row < h; ++row)
       for (int col = 0; col < w; ++col)
         if (closed.at<std::uint8_t>(row, col) && r.passage.at(col, row) && !walls.at(col, row))

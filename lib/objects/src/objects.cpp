@@ -14,6 +14,9 @@ namespace indoormap::objects {
 namespace {
 
 constexpr float kNoHeight = std::numeric_limits<float>::quiet_NaN();
+// Cells this close to a wall cell whose column reaches the wall band hold the wall's face (the
+// wall class comes from the wall band and may sit a cell or two off the lower face).
+constexpr int kWallFaceCells = 3;
 
 struct Column {
   std::int64_t bottom = -1, top = -1;  // layers; -1: nothing above the floor
@@ -174,8 +177,8 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
         cols.at(c, r) = column_extent(voxels, c, r, floor_layer, ceiling_layer - 2, max_gap);
         bool wall_face = false;
         if (cols.at(c, r).top >= layers.wall_band.lo_layer)
-          for (int dr = -1; dr <= 1 && !wall_face; ++dr)
-            for (int dc = -1; dc <= 1; ++dc)
+          for (int dr = -kWallFaceCells; dr <= kWallFaceCells && !wall_face; ++dr)
+            for (int dc = -kWallFaceCells; dc <= kWallFaceCells; ++dc)
               if (layout.contains(c + dc, r + dr) && layout.at(c + dc, r + dr) == Cell::kWall) wall_face = true;
         if (wall_face) cols.at(c, r) = Column{};
         if (cols.at(c, r).top >= 0) {
@@ -217,6 +220,7 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
     CellIndex start{-1, -1}, lo{std::numeric_limits<int>::max(), std::numeric_limits<int>::max()}, hi{-1, -1};
     std::int64_t bottom = std::numeric_limits<std::int64_t>::max(), top = -1;
     bool touches_wall = false;
+    std::vector<std::int64_t> tops;  // per cell with data
   };
   std::vector<Acc> acc(static_cast<std::size_t>(lab.count) + 1);
   for (int r = 0; r < h; ++r)
@@ -231,6 +235,7 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
       if (col.top >= 0) {
         a.bottom = std::min(a.bottom, col.bottom);
         a.top = std::max(a.top, col.top);
+        a.tops.push_back(col.top);
       }
       for (int dr = -1; dr <= 1 && !a.touches_wall; ++dr)
         for (int dc = -1; dc <= 1; ++dc)
@@ -260,7 +265,12 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
       o.has_height = true;
       o.on_floor = a.bottom <= floor_layer + 2;
       o.z_min_m = o.on_floor ? voxels.layer_center_m(floor_layer) : voxels.layer_bottom_m(a.bottom);
-      o.z_max_m = voxels.layer_center_m(a.top);
+      // The top is a high percentile of the cells' tops, not their maximum: a strip of cells on
+      // the wall face behind an object, or a mixed pixel, must not lift a cabinet to the ceiling.
+      std::vector<std::int64_t> tops = a.tops;
+      const auto k = static_cast<std::size_t>(params.top_percentile / 100.0 * static_cast<double>(tops.size() - 1));
+      std::nth_element(tops.begin(), tops.begin() + static_cast<std::ptrdiff_t>(k), tops.end());
+      o.z_max_m = voxels.layer_center_m(tops[k]);
     }
     res.objects.push_back(std::move(o));
   }

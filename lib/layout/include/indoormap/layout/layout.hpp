@@ -14,6 +14,9 @@ namespace indoormap::layout {
 
 struct LayoutParams {
   int furniture_closing_iterations = 1;  ///< 3x3 cross dilation-erosion chain (0: off)
+  /// Closings (3x3 square) of the furniture map before it bounds the free-space flood, so that
+  /// the flood does not leak through the gaps of a speckled object face (0: off, the paper).
+  int flood_barrier_closing = 2;
   /// Unreachable pockets of the passage area that touch furniture and are at most this large
   /// become furniture (space behind / between objects); larger ones stay unknown. The paper makes
   /// every pocket furniture, which turns e.g. the notch of a U-shaped room into one big object.

@@ -23,6 +23,7 @@ struct ObjectParams {
   /// 2D labelling.
   double split_height_step_m = 0.15;  ///< pieces smaller than min_area_m2 after the split rejoin
                                       ///< the neighbour they share the longest border with
+  double top_percentile = 90.0;  ///< [%] z_max: this percentile of the tops of the object's cells
   double max_vertical_gap_m = 0.3;  ///< a column's top is the highest point reachable from below
                                     ///< without an empty gap longer than this (a lamp above a table
                                     ///< is not the table's top)
@@ -59,8 +60,8 @@ struct ObjectsResult {
 
 /// Finds the objects of the furniture class. voxels supplies heights; it must cover the layout's
 /// grid (same 2D geometry); heights are searched between the floor and the ceiling layers of
-/// `layers`. Furniture cells beside a wall whose column reaches the wall band hold the wall's
-/// face, not the object: they take the height of the nearest other cell.
+/// `layers`. Furniture cells within three cells of a wall whose column reaches the wall band hold
+/// the wall's face, not the object: they take the height of the nearest other cell.
 ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geometry,
                               const cloud::VoxelGrid& voxels, const cloud::LayerAnalysis& layers,
                               const ObjectParams& params = {});
