@@ -6,6 +6,7 @@
 
 #include "indoormap/cloud/load.hpp"
 #include "indoormap/layout/pipeline.hpp"
+#include "indoormap/objects/objects.hpp"
 #include "test_support.hpp"
 
 using namespace indoormap;
@@ -130,4 +131,26 @@ TEST(JacobsPipeline, FurnitureStandsAlongTheWalls) {
       }
   ASSERT_GT(all, 0);
   EXPECT_GT(static_cast<double>(near) / all, 0.7);
+}
+
+TEST(JacobsPipeline, DesksAndCabinetsAlongTheWallsHavePlausibleSizesAndHeights) {
+  REQUIRE_JACOBS();
+  const auto& m = J->map;
+  const auto objs = objects::extract_objects(m.layout.layout, m.geometry, m.voxels, m.layers, {});
+  ASSERT_FALSE(objs.objects.empty());
+  int along_walls = 0;
+  for (const auto& o : objs.objects) {
+    ASSERT_TRUE(o.has_height) << "object " << o.id;
+    EXPECT_GE(o.z_min_m, m.layers.floor_z_m - 1e-9) << "object " << o.id;
+    EXPECT_LE(o.z_max_m, m.layers.ceiling_z_m) << "object " << o.id;
+    if (o.area_m2 < 0.3 || !o.touches_wall) continue;
+    ++along_walls;
+    // Desks and cabinets: 0.5 to 2.3 m high, at most 2 m deep, standing on the floor.
+    const double height = o.z_max_m - m.layers.floor_z_m;
+    EXPECT_GT(height, 0.5) << "object " << o.id;
+    EXPECT_LT(height, 2.3) << "object " << o.id;
+    EXPECT_LT(o.box.width_m, 2.0) << "object " << o.id;
+    EXPECT_TRUE(o.on_floor) << "object " << o.id;
+  }
+  EXPECT_GE(along_walls, 3);
 }
