@@ -69,15 +69,27 @@ Bounds3 robust_bounds(const std::vector<Eigen::Vector3f>& points, const VoxelPar
   Bounds3 b;
   b.lo_m.setConstant(std::numeric_limits<double>::infinity());
   b.hi_m.setConstant(-std::numeric_limits<double>::infinity());
-  const Eigen::Vector3f lo = (core.lo_m.array() - params.bounds_gap_m).cast<float>();
-  const Eigen::Vector3f hi = (core.hi_m.array() + params.bounds_gap_m).cast<float>();
-  Eigen::Vector3f mn = b.lo_m.cast<float>(), mx = b.hi_m.cast<float>();
+  const float lx = static_cast<float>(core.lo_m.x() - params.bounds_gap_m),
+              ly = static_cast<float>(core.lo_m.y() - params.bounds_gap_m),
+              lz = static_cast<float>(core.lo_m.z() - params.bounds_gap_m);
+  const float hx = static_cast<float>(core.hi_m.x() + params.bounds_gap_m),
+              hy = static_cast<float>(core.hi_m.y() + params.bounds_gap_m),
+              hz = static_cast<float>(core.hi_m.z() + params.bounds_gap_m);
+  float mnx = hx, mny = hy, mnz = hz, mxx = lx, mxy = ly, mxz = lz;
+  bool any = false;
   for (const auto& p : points) {
-    if ((p.array() >= lo.array()).all() && (p.array() <= hi.array()).all()) {
-      mn = mn.cwiseMin(p);
-      mx = mx.cwiseMax(p);
-    }
+    const float x = p.x(), y = p.y(), z = p.z();
+    if (!(x >= lx && x <= hx && y >= ly && y <= hy && z >= lz && z <= hz)) continue;
+    any = true;
+    mnx = std::min(mnx, x);
+    mny = std::min(mny, y);
+    mnz = std::min(mnz, z);
+    mxx = std::max(mxx, x);
+    mxy = std::max(mxy, y);
+    mxz = std::max(mxz, z);
   }
+  if (!any) return b;  // infinite bounds: voxelize reports "no points inside"
+  const Eigen::Vector3f mn(mnx, mny, mnz), mx(mxx, mxy, mxz);
   b.lo_m = mn.cast<double>();
   b.hi_m = mx.cast<double>();
   return b;
