@@ -149,6 +149,21 @@ INSTANTIATE_TEST_SUITE_P(
                 kIn + ".pcd" + kOut,
                 2,
                 "PCD binary_compressed: uncompressed size 49 does not match"},
+        // Found by the pcd fuzz target: PCL ends its header at a blank line and then crashes.
+        AppCase{
+            "pcd_header_blank_line_with_cr",
+            {{"in.pcd", " \r\n" + pcd("binary", 1) + std::string(12, '\0')}},
+            kIn + ".pcd" + kOut,
+            2,
+            "in.pcd:1: PCD header: blank line of spaces, tabs or a CR alone (only empty lines are "
+            "allowed)"},
+        // Also found by fuzzing: PCL reads header lines on after DATA, into the binary data.
+        AppCase{"pcd_binary_data_looks_like_header",
+                {{"in.pcd", pcd("binary", 1) + "COUNT 1 1 1\n"}},
+                kIn + ".pcd" + kOut,
+                2,
+                "in.pcd:9: PCD header: the data section starts with bytes that PCL would read as a "
+                "COUNT header line"},
         AppCase{"pcd_points_over_budget",
                 {{"in.pcd", pcd("binary", 4) + std::string(48, '\0')},
                  {"c.yaml", "input:\n  max_points: 3\n"}},

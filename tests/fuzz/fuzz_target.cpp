@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <new>
 #include <stdexcept>
@@ -14,6 +15,12 @@ namespace indoormap::fuzz {
 namespace fs = std::filesystem;
 
 namespace {
+// Where fresh_dir() lives, for the clean-up at exit.
+fs::path& fresh_dir_path() {
+  static fs::path p;
+  return p;
+}
+
 std::vector<Target>& registry() {
   static std::vector<Target> r;
   return r;
@@ -60,6 +67,11 @@ fs::path fresh_dir() {
     const char* tmp = std::getenv("TMPDIR");
     fs::path d =
         fs::path(tmp && *tmp ? tmp : "/tmp") / ("indoormap-fuzz-" + std::to_string(::getpid()));
+    fresh_dir_path() = d;  // constructed before the handler is registered, so still alive in it
+    std::atexit([] {
+      std::error_code ec;
+      fs::remove_all(fresh_dir_path(), ec);
+    });
     return d;
   }();
   std::error_code ec;
