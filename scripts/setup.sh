@@ -6,6 +6,11 @@ cd "$(dirname "$0")/.."
 
 packages=(cmake g++ ninja-build pkg-config libpcl-dev libeigen3-dev libopencv-dev libyaml-cpp-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev)
+# The fuzz build (-DINDOORMAP_FUZZ=ON, scripts/fuzz.sh) needs clang and its sanitizer / libFuzzer
+# runtimes. (The gcc ASan + UBSan build needs nothing more: g++ brings libasan and libubsan.)
+fuzz=0
+for a in "${@:2}"; do [ "$a" = "-DINDOORMAP_FUZZ=ON" ] && fuzz=1; done
+[ $fuzz -eq 1 ] && packages+=(clang-14 libclang-rt-14-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -21,6 +26,10 @@ fi
 build_dir="$1"
 shift
 if [ ! -f "$build_dir/build.ninja" ]; then
-  cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >&2
+  if [ $fuzz -eq 1 ]; then
+    CC=clang-14 CXX=clang++-14 cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >&2
+  else
+    cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >&2
+  fi
 fi
 cmake --build "$build_dir" --parallel "${INDOORMAP_JOBS:-2}" >&2

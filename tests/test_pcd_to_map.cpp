@@ -182,24 +182,25 @@ std::string flat_cloud() {
 INSTANTIATE_TEST_SUITE_P(
     Cases, PcdToMapBadInput,
     ::testing::Values(
-        BadInput{"missing", "nothere.pcd", "<missing>", "", ""},
-        BadInput{"empty_xyz", "empty.xyz", "", "", ""},
-        BadInput{"malformed_line", "bad.xyz", "1 2 3\n4 5 6\n7 eight 9\n", "bad.xyz:3", ""},
-        BadInput{"empty_pcd", "empty.pcd", "", "", ""},
+        BadInput{"missing", "nothere.pcd", "<missing>", "nothere.pcd: no such file", ""},
+        BadInput{"empty_xyz", "empty.xyz", "", "empty.xyz: empty cloud: no points", ""},
+        BadInput{"malformed_line", "bad.xyz", "1 2 3\n4 5 6\n7 eight 9\n", "bad.xyz:3: malformed line, expected 'x y z ...'", ""},
+        BadInput{"empty_pcd", "empty.pcd", "", "empty.pcd: empty file (no PCD header)", ""},
         BadInput{"pcd_without_fields", "nofields.pcd",
                  "VERSION 0.7\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n1 2 3\n",
-                 "FIELDS", ""},
+                 "nofields.pcd:8: PCD header: no FIELDS line before DATA", ""},
         BadInput{"pcd_huge_dims", "huge.pcd",
                  "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 65536\nHEIGHT 65536\n"
                  "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 0\nDATA binary\n",
-                 "", ""},
+                 "huge.pcd:9: PCD header: WIDTH 65536 x HEIGHT 65536 does not equal POINTS 0", ""},
         BadInput{"pcd_huge_points", "short.pcd",
                  "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 4000000000\nHEIGHT 1\n"
                  "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4000000000\nDATA binary\nabc",
-                 "", ""},
-        BadInput{"all_nan", "nan.xyz", "nan nan nan\nnan 1 2\ninf 0 0\n", "", ""},
+                 "short.pcd:10: PCD data section too short for POINTS 4000000000 (truncated file?)", ""},
+        BadInput{"all_nan", "nan.xyz", "nan nan nan\nnan 1 2\ninf 0 0\n",
+                 "nan.xyz: empty cloud: all 3 points are non-finite (NaN / Inf)", ""},
         BadInput{"one_height", "flat.xyz", flat_cloud(), "one height", ""},
-        BadInput{"unknown_extension", "cloud.las", "1 2 3\n", "", ""}),
+        BadInput{"unknown_extension", "cloud.las", "1 2 3\n", "cloud.las: unknown file type '.las' (supported:", ""}),
     [](const auto& info) { return info.param.name; });
 
 TEST(PcdToMap, GridAboveBudgetIsRefusedBeforeAllocating) {

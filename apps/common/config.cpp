@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -131,10 +132,11 @@ struct Reader {
       } else if constexpr (std::is_same_v<T, bool>) {
         v = n.as<bool>();
       } else if constexpr (std::is_integral_v<T>) {
+        // Range first (NaN fails it), so the cast below is defined.
         const auto d = n.as<long double>();
-        if (d < static_cast<long double>(std::numeric_limits<T>::min()) ||
-            d > static_cast<long double>(std::numeric_limits<T>::max()) ||
-            d != static_cast<long double>(static_cast<long long>(d)))
+        if (!(d >= static_cast<long double>(std::numeric_limits<T>::min()) &&
+              d <= static_cast<long double>(std::numeric_limits<T>::max())) ||
+            d != std::floor(d))
           fail(full, n, "expected an integer in range");
         v = static_cast<T>(d);
       } else {
@@ -162,8 +164,15 @@ void merge_config_file(PipelineConfig& config, const std::string& path) {
 
   std::map<std::string, std::set<std::string>> known;
   visit(config, [&](const char* s, const char* k, auto&) { known[s].insert(k); });
+  // A key that is not a string (a list or a mapping used as a key) is refused by name.
+  auto key_of = [&](const YAML::Node& k) {
+    if (!k.IsScalar())
+      throw InputError(path, "keys must be names, not lists or mappings",
+                       static_cast<std::size_t>(k.Mark().line + 1));
+    return k.Scalar();
+  };
   for (const auto& sec : root) {
-    const auto name = sec.first.as<std::string>();
+    const auto name = key_of(sec.first);
     const auto it = known.find(name);
     if (it == known.end())
       throw InputError(path,
@@ -175,7 +184,7 @@ void merge_config_file(PipelineConfig& config, const std::string& path) {
       throw InputError(path, "section '" + name + "' must be a mapping",
                        static_cast<std::size_t>(sec.second.Mark().line + 1));
     for (const auto& kv : sec.second) {
-      const auto key = kv.first.as<std::string>();
+      const auto key = key_of(kv.first);
       if (!it->second.count(key))
         throw InputError(path, "unknown key '" + name + "." + key + "'",
                          static_cast<std::size_t>(kv.first.Mark().line + 1));

@@ -6,6 +6,7 @@
 #include <pcl/io/pcd_io.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -80,9 +81,14 @@ PcdHeader read_pcd_header(std::string_view head, std::uint64_t file_size, const 
     std::string_view text = head.substr(pos, end - pos);
     pos = nl == std::string_view::npos ? head.size() : nl + 1;
     ++line;
+    const bool empty_line = text.empty();
     while (!text.empty() && (text.back() == '\r' || text.back() == ' ' || text.back() == '\t'))
       text.remove_suffix(1);
     const auto tok = split_ws(text);
+    // PCL skips an empty line but ends its header at a blank one (spaces, tabs or a CR alone),
+    // then reads the data from the wrong place and crashes (a fuzz finding): refuse it.
+    if (tok.empty() && !empty_line)
+      fail("blank line of spaces, tabs or a CR alone (only empty lines are allowed)", line);
     if (tok.empty() || tok[0][0] == '#') continue;
     if (text.find('\0') != std::string_view::npos) fail("binary bytes inside the header", line);
 
@@ -201,6 +207,28 @@ PcdHeader read_pcd_header(std::string_view head, std::uint64_t file_size, const 
                          " (truncated file?): " + detail,
                      data_line);
   };
+  // PCL keeps reading header lines after DATA: it skips empty and '#' lines and re-parses any
+  // line starting with a header keyword (even inside binary data: a body starting "COUNT..."
+  // crashed it, a fuzz finding); it stops at the first other line. Refuse what it would misread.
+  if (h.data != "ascii") {
+    std::size_t at = static_cast<std::size_t>(h.data_offset);
+    while (at < head.size()) {
+      const std::size_t nl = std::min(head.find('\n', at), head.size());
+      std::string_view l = head.substr(at, nl - at);
+      at = nl + 1;
+      if (l.empty()) continue;
+      while (!l.empty() && std::isspace(static_cast<unsigned char>(l.front()))) l.remove_prefix(1);
+      if (l.empty()) break;  // PCL: an unknown (empty) keyword ends its header
+      if (l[0] == '#') continue;
+      for (const char* key : {"VERSION", "FIELDS", "COLUMNS", "SIZE", "TYPE", "COUNT", "WIDTH",
+                              "HEIGHT", "VIEWPOINT", "POINTS", "DATA"})
+        if (l.starts_with(key))
+          fail(std::string("the data section starts with bytes that PCL would read as a ") + key +
+                   " header line",
+               data_line);
+      break;
+    }
+  }
   if (h.data == "binary") {
     if (h.points > body / h.point_size)
       too_short(std::to_string(body) + " bytes, need " + std::to_string(h.point_size) +

@@ -214,8 +214,8 @@ Header parse_header(std::string_view head, const std::string& file) {
 // Buffered sequential reads with a hard end: never reads beyond the file, never trusts counts.
 class ByteReader {
  public:
-  ByteReader(std::FILE* f, const std::string& file) : f_(f), file_(file) {
-    buf_.resize(kBufferBytes);
+  ByteReader(std::FILE* f, const std::string& file, std::uint64_t bytes) : f_(f), file_(file) {
+    buf_.resize(static_cast<std::size_t>(std::clamp<std::uint64_t>(bytes, 64, kBufferBytes)));
   }
   // Returns a pointer to n contiguous bytes (n <= kBufferBytes), or throws on end of file.
   const unsigned char* take(std::size_t n) {
@@ -242,8 +242,11 @@ class ByteReader {
 // Whitespace-separated tokens of an ascii body, read in chunks, with line numbers.
 class TokenReader {
  public:
-  TokenReader(std::FILE* f, const std::string& file, std::size_t first_line)
-      : f_(f), file_(file), line_(first_line) {}
+  TokenReader(std::FILE* f, const std::string& file, std::size_t first_line, std::uint64_t bytes)
+      : f_(f),
+        file_(file),
+        line_(first_line),
+        chunk_(static_cast<std::size_t>(std::clamp<std::uint64_t>(bytes + 1, 64, kBufferBytes))) {}
   std::string_view next() {
     for (;;) {
       while (pos_ < buf_.size() && std::isspace(static_cast<unsigned char>(buf_[pos_]))) {
@@ -262,10 +265,10 @@ class TokenReader {
       buf_.erase(0, pos_);
       pos_ = 0;
       const std::size_t old = buf_.size();
-      buf_.resize(old + kBufferBytes);
-      const std::size_t got = std::fread(buf_.data() + old, 1, kBufferBytes, f_);
+      buf_.resize(old + chunk_);
+      const std::size_t got = std::fread(buf_.data() + old, 1, chunk_, f_);
       buf_.resize(old + got);
-      eof_ = got < kBufferBytes;
+      eof_ = got < chunk_;
     }
   }
   double number() {
@@ -287,6 +290,7 @@ class TokenReader {
   std::FILE* f_;
   const std::string& file_;
   std::size_t line_;
+  std::size_t chunk_;  ///< bytes per read: the body size + 1 for small files, so one read sees eof
   std::string buf_;
   std::size_t pos_ = 0;
   bool eof_ = false;
@@ -349,8 +353,9 @@ ReadInfo read_ply(const std::string& file, const Budget& budget,
 
   double v[3] = {0.0, 0.0, 0.0};
   if (h.format == Format::kAscii) {
-    TokenReader tr(f.get(), file, h.lines + 1);
+    TokenReader tr(f.get(), file, h.lines + 1, body);
     for (auto it = h.elements.begin(); it <= vit; ++it) {
+      if (it->props.empty()) continue;  // nothing to read, whatever its count (up to 2^64 - 1)
       const bool is_vertex = it == vit;
       for (std::uint64_t k = 0; k < it->count; ++k) {
         for (std::size_t pi = 0; pi < it->props.size(); ++pi) {
@@ -376,8 +381,9 @@ ReadInfo read_ply(const std::string& file, const Budget& budget,
     }
   } else {
     const bool swap = h.format == Format::kBig;
-    ByteReader br(f.get(), file);
+    ByteReader br(f.get(), file, body);
     for (auto it = h.elements.begin(); it <= vit; ++it) {
+      if (it->props.empty()) continue;  // nothing to read, whatever its count (up to 2^64 - 1)
       const bool is_vertex = it == vit;
       for (std::uint64_t k = 0; k < it->count; ++k) {
         for (std::size_t pi = 0; pi < it->props.size(); ++pi) {

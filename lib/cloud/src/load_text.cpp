@@ -80,28 +80,41 @@ void for_each_line(const std::string& file, std::uint64_t offset, std::size_t fi
   if (offset > 0 && std::fseek(f.get(), static_cast<long>(offset), SEEK_SET) != 0)
     throw InputError(file, "cannot seek to byte " + std::to_string(offset));
 
+  // A small file gets a small buffer (many small files stay cheap); the end of the file is
+  // where a read comes back short.
+  const std::size_t chunk = static_cast<std::size_t>(
+      std::min<std::uint64_t>(kChunkBytes, (size > offset ? size - offset : 0) + 1));
   std::string buf;
-  buf.reserve(kChunkBytes + kMaxLineBytes);
+  buf.reserve(chunk);
   std::size_t line = first_line - 1;
   std::uint64_t consumed = offset;
   bool eof = false;
   while (!eof) {
     const std::size_t carry = buf.size();
-    buf.resize(carry + kChunkBytes);
-    const std::size_t got = std::fread(buf.data() + carry, 1, kChunkBytes, f.get());
-    if (got < kChunkBytes && std::ferror(f.get())) throw InputError(file, "read error", line + 1);
-    eof = got < kChunkBytes;
+    buf.resize(carry + chunk);
+    const std::size_t got = std::fread(buf.data() + carry, 1, chunk, f.get());
+    if (got < chunk && std::ferror(f.get())) throw InputError(file, "read error", line + 1);
+    eof = got < chunk;
     buf.resize(carry + got);
 
     const char* data = buf.data();
     const char* end = data + buf.size();
     const char* p = data;
+    // Every line is held to the limit, not only one that crosses a chunk boundary.
+    auto check_length = [&](const char* b, const char* e) {
+      if (static_cast<std::size_t>(e - b) > kMaxLineBytes)
+        throw InputError(file, "line longer than 1 MiB", line);
+    };
     while (const char* nl = static_cast<const char*>(std::memchr(p, '\n', end - p))) {
-      on_line(p, nl, ++line);
+      ++line;
+      check_length(p, nl);
+      on_line(p, nl, line);
       p = nl + 1;
     }
     if (eof && p < end) {
-      on_line(p, end, ++line);
+      ++line;
+      check_length(p, end);
+      on_line(p, end, line);
       p = end;
     }
     consumed += static_cast<std::uint64_t>(p - data);

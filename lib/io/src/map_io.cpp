@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <limits>
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
@@ -99,9 +100,23 @@ std::pair<std::int64_t, std::int64_t> image_size(const fs::path& path) {
       }
       in >> v;
     };
+    std::int64_t maxval = -1;
     next_int(w);
     next_int(h);
-    if (!in || w <= 0 || h <= 0) throw InputError(path.string(), "malformed PGM header");
+    next_int(maxval);
+    if (!in || w <= 0 || h <= 0 || maxval <= 0 || maxval > 65535)
+      throw InputError(path.string(), "malformed PGM header");
+    // The pixels must be there before the decoder allocates for them: P5 has 1 or 2 bytes per
+    // pixel after one whitespace byte, P2 at least one digit and a separator per pixel.
+    const auto header_end = static_cast<std::uint64_t>(in.tellg()) + 1;
+    std::error_code ec;
+    const std::uint64_t size = fs::file_size(path, ec);
+    const std::uint64_t per_pixel = head[1] == '5' ? (maxval > 255 ? 2 : 1) : 2;
+    const std::uint64_t body = !ec && size > header_end ? size - header_end + (head[1] == '2') : 0;
+    if (static_cast<std::uint64_t>(w) > body / per_pixel / static_cast<std::uint64_t>(h))
+      throw InputError(path.string(), "PGM of " + std::to_string(w) + " x " + std::to_string(h) +
+                                          " pixels is truncated (" + std::to_string(body) +
+                                          " bytes of pixel data)");
     return {w, h};
   }
   throw InputError(path.string(), "map image is neither PGM (P5/P2) nor PNG");
@@ -153,18 +168,36 @@ RosMap read_ros_map(const fs::path& yaml_path, std::int64_t max_cells) {
     }
   }
   if (!m.meta.origin.allFinite()) throw InputError(yaml_path.string(), "key 'origin' is not finite");
-  m.meta.negate = static_cast<int>(number_at(root, "negate", yaml_path, 0.0));
+  const double negate = number_at(root, "negate", yaml_path, 0.0);
+  if (negate != 0.0 && negate != 1.0)
+    throw InputError(yaml_path.string(), "key 'negate' must be 0 or 1");
+  m.meta.negate = static_cast<int>(negate);
   m.meta.occupied_thresh = number_at(root, "occupied_thresh", yaml_path, 0.65);
   m.meta.free_thresh = number_at(root, "free_thresh", yaml_path, 0.196);
+  if (!(m.meta.free_thresh >= 0.0 && m.meta.free_thresh <= m.meta.occupied_thresh &&
+        m.meta.occupied_thresh <= 1.0))
+    throw InputError(yaml_path.string(),
+                     "keys 'free_thresh' <= 'occupied_thresh' must be numbers in [0, 1]");
 
   fs::path image = m.meta.image;
   if (image.is_relative()) image = yaml_path.parent_path() / image;
+  std::error_code ec;
+  if (!fs::is_regular_file(image, ec))
+    throw InputError(image.string(), "map image not found (named by 'image' in " +
+                                         yaml_path.string() + ")");
   const auto [w, h] = image_size(image);
-  if (w * h > max_cells)
+  if (w <= 0 || h <= 0) throw InputError(image.string(), "map image has no pixels");
+  if (w > std::numeric_limits<int>::max() || h > std::numeric_limits<int>::max() ||
+      w > max_cells / h)
     throw BudgetError(image.string() + ": map of " + std::to_string(w) + " x " + std::to_string(h) +
                       " cells is above the budget of " + std::to_string(max_cells) + " cells");
-  cv::Mat img = cv::imread(image.string(), cv::IMREAD_GRAYSCALE);
-  if (img.empty() || img.cols != w || img.rows != h)
+  cv::Mat img;
+  try {
+    img = cv::imread(image.string(), cv::IMREAD_GRAYSCALE);
+  } catch (const cv::Exception& e) {
+    throw InputError(image.string(), "cannot decode the map image: " + e.msg);
+  }
+  if (img.empty() || img.cols != w || img.rows != h || img.type() != CV_8UC1)
     throw InputError(image.string(), "cannot decode the map image");
 
   m.geometry = GridGeometry({m.meta.origin.x(), m.meta.origin.y()}, m.meta.resolution_m,

@@ -1,0 +1,212 @@
+#!/usr/bin/env python3
+"""Writes the seed corpora of the fuzz targets (tests/fuzz/corpus/<target>/). Run from anywhere;
+rerun after editing. Seeds are small (a few KB at most): valid files of every variant the
+readers accept, plus the known killers (Debian PCL 1.13, OpenCV 4.6), truncations, CRLF line
+ends, NaN / Inf / 1e38, huge counts. Multi-file targets join their files with SEP."""
+import os
+import struct
+import zlib
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SEP = b"\n--part--\n"
+
+
+def put(target, name, data):
+    d = os.path.join(HERE, "corpus", target)
+    os.makedirs(d, exist_ok=True)
+    if isinstance(data, str):
+        data = data.encode()
+    with open(os.path.join(d, name), "wb") as f:
+        f.write(data)
+
+
+def crlf(b):
+    return b.replace(b"\n", b"\r\n") if isinstance(b, bytes) else b.replace("\n", "\r\n")
+
+
+# ---------------------------------------------------------------- PCD
+def pcd_head(n, data="ascii", fields="x y z", size="4 4 4", typ="F F F", count="1 1 1",
+             width=None, height=1, viewpoint=True):
+    w = n if width is None else width
+    s = "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\n"
+    s += f"FIELDS {fields}\nSIZE {size}\nTYPE {typ}\nCOUNT {count}\nWIDTH {w}\nHEIGHT {height}\n"
+    if viewpoint:
+        s += "VIEWPOINT 0 0 1.5 1 0 0 0\n"
+    s += f"POINTS {n}\nDATA {data}\n"
+    return s
+
+
+pts = [(1.0, 2.0, 3.0), (4.0, 5.0, 6.0), (0.5, -1.5, 2.25), (7.0, 8.0, 9.0)]
+ascii_body = "".join(f"{x} {y} {z}\n" for x, y, z in pts)
+put("pcd", "ascii.pcd", pcd_head(4) + ascii_body)
+put("pcd", "ascii_crlf.pcd", crlf(pcd_head(4) + ascii_body))
+put("pcd", "ascii_nan_inf_1e38.pcd",
+    pcd_head(5) + "nan nan nan\ninf 0 0\n1e38 1e38 1e38\n-1e999 2 3\n1 2 3\n")
+put("pcd", "ascii_extra_fields.pcd",
+    pcd_head(2, fields="x y z rgb normal", size="4 4 4 4 4", typ="F F F U F", count="1 1 1 1 3")
+    + "1 2 3 255 0 0 1\n4 5 6 128 0 1 0\n")
+put("pcd", "ascii_short_line.pcd", pcd_head(2) + "1 2 3\n4 5\n")
+put("pcd", "ascii_truncated.pcd", pcd_head(4) + "1 2 3\n4 5 6\n")
+bin_body = b"".join(struct.pack("<fff", *p) for p in pts)
+put("pcd", "binary.pcd", pcd_head(4, "binary").encode() + bin_body)
+put("pcd", "binary_truncated.pcd", pcd_head(4, "binary").encode() + bin_body[:20])
+put("pcd", "binary_double_z_label.pcd",
+    pcd_head(2, "binary", fields="x y z label", size="4 4 8 1", typ="F F F U", count="1 1 1 1").encode()
+    + struct.pack("<ffdB", 1, 2, 3, 7) + struct.pack("<ffdB", float("nan"), 5, 6, 7))
+# binary_compressed: fields stored one after another, LZF literal runs (control byte < 32).
+soa = b"".join(struct.pack("<f", p[a]) for a in range(3) for p in pts)
+
+
+def lzf_literal(raw):
+    out = b""
+    for i in range(0, len(raw), 32):
+        chunk = raw[i:i + 32]
+        out += bytes([len(chunk) - 1]) + chunk
+    return out
+
+
+comp = lzf_literal(soa)
+put("pcd", "binary_compressed.pcd",
+    pcd_head(4, "binary_compressed").encode() + struct.pack("<II", len(comp), len(soa)) + comp)
+put("pcd", "binary_compressed_bad_sizes.pcd",
+    pcd_head(4, "binary_compressed").encode() + struct.pack("<II", 9, len(soa)) + comp)
+put("pcd", "binary_compressed_huge.pcd",
+    pcd_head(4, "binary_compressed").encode() + struct.pack("<II", 0xFFFFFFFF, 0xFFFFFFF0) + comp[:8])
+# binary_compressed_by_pcl.pcd (with LZF back-references) was written by
+# pcl::io::savePCDFileBinaryCompressed from the same four points; it is kept as is.
+# The Debian PCL 1.13 killers and relatives.
+put("pcd", "empty.pcd", "")
+put("pcd", "no_fields.pcd",
+    "VERSION 0.7\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n1 2 3\n")
+put("pcd", "dims_65536_points_0.pcd", pcd_head(0, "binary", width=65536, height=65536))
+put("pcd", "points_4e9_short_body.pcd", pcd_head(4000000000, "binary") + "abc")
+put("pcd", "width_overflow.pcd", pcd_head(1, "binary", width=4294967296, height=4294967296).encode() + bin_body)
+put("pcd", "huge_count.pcd", pcd_head(1, fields="x y z f", size="4 4 4 4", typ="F F F F",
+                                      count="1 1 1 1048576") + "1 2 3 4\n")
+put("pcd", "no_data_line.pcd", pcd_head(1).replace("DATA ascii\n", ""))
+put("pcd", "header_only.pcd", pcd_head(1, "binary"))
+put("pcd", "viewpoint_nan.pcd", pcd_head(1).replace("VIEWPOINT 0 0 1.5 1 0 0 0", "VIEWPOINT nan 0 0 1 0 0 0") + "1 2 3\n")
+put("pcd", "duplicate_field.pcd", pcd_head(1, fields="x x z") + "1 2 3\n")
+put("pcd", "columns_v05.pcd", pcd_head(1).replace("FIELDS", "COLUMNS") + "1 2 3\n")
+put("pcd", "int_xyz.pcd", pcd_head(1, typ="I I I") + "1 2 3\n")
+
+# ---------------------------------------------------------------- PLY
+def ply_head(fmt, n, props=("float x", "float y", "float z"), extra=""):
+    s = f"ply\nformat {fmt} 1.0\ncomment seed\nelement vertex {n}\n"
+    s += "".join(f"property {p}\n" for p in props) + extra + "end_header\n"
+    return s
+
+
+put("ply", "ascii.ply", ply_head("ascii", 4) + ascii_body)
+put("ply", "ascii_crlf.ply", crlf(ply_head("ascii", 4) + ascii_body))
+put("ply", "ascii_nan_inf_1e38.ply", ply_head("ascii", 4) + "nan nan nan\ninf 0 0\n1e38 1e38 1e38\n1 2 3\n")
+put("ply", "ascii_faces.ply",
+    ply_head("ascii", 3, extra="element face 1\nproperty list uchar int vertex_indices\n")
+    + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+put("ply", "ascii_truncated.ply", ply_head("ascii", 4) + "1 2 3\n4 5")
+put("ply", "binary_le.ply", ply_head("binary_little_endian", 4).encode() + bin_body)
+put("ply", "binary_be.ply", ply_head("binary_big_endian", 4).encode()
+    + b"".join(struct.pack(">fff", *p) for p in pts))
+put("ply", "binary_double_rgb.ply",
+    ply_head("binary_little_endian", 2, props=("double x", "double y", "double z", "uchar red")).encode()
+    + struct.pack("<dddB", 1, 2, 3, 9) + struct.pack("<dddB", 4, 5, 6, 9))
+put("ply", "binary_elements_before.ply",
+    ("ply\nformat binary_little_endian 1.0\nelement camera 1\nproperty list uchar float k\n"
+     "element vertex 2\nproperty float x\nproperty float y\nproperty float z\nend_header\n").encode()
+    + bytes([2]) + struct.pack("<ff", 1, 2) + bin_body[:24])
+put("ply", "binary_truncated.ply", ply_head("binary_little_endian", 4).encode() + bin_body[:30])
+put("ply", "vertex_4e9.ply", ply_head("binary_little_endian", 4000000000).encode() + bin_body)
+put("ply", "vertex_0.ply", ply_head("ascii", 0))
+put("ply", "empty.ply", "")
+put("ply", "no_end_header.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n")
+put("ply", "list_huge_count.ply",
+    ply_head("binary_little_endian", 1, extra="").replace("element vertex 1", "element face 1\nproperty list uint int idx\nelement vertex 1").encode()
+    + struct.pack("<I", 0xFFFFFFFF) + bin_body[:12])
+
+# ---------------------------------------------------------------- XYZ
+put("xyz", "plain.xyz", ascii_body)
+put("xyz", "crlf.xyz", crlf("# comment\n" + ascii_body))
+put("xyz", "nan_inf_1e38.xyz", "nan nan nan\ninf -inf 0\n1e38 1e38 1e38\n1e999 0 0\n+1.5 -.5 2e-3\n1 2 3\n")
+put("xyz", "csv_header.xyz", "x,y,z,intensity\n1,2,3,0.5\n4 , 5 , 6,0.7\n")
+put("xyz", "extra_columns.xyz", "1 2 3 255 128 64 0.3\n4\t5\t6\t1\n")
+put("xyz", "comments_blank.xyz", "// exported\n\n# x y z\n1 2 3\n\n")
+put("xyz", "malformed.xyz", "1 2 3\n4 five 6\n")
+put("xyz", "two_values.xyz", "1 2\n")
+put("xyz", "empty.xyz", "")
+put("xyz", "only_comments.xyz", "# nothing\n# here\n")
+put("xyz", "no_final_newline.xyz", "1 2 3\n4 5 6")
+put("xyz", "binary_junk.xyz", bytes(range(256)))
+
+# ---------------------------------------------------------------- 3DTK
+scan = "0 0 100 1 2 3 4 5\n100 50 200 0 0 0 0 0\n-50 20 300 0 0 0 0 0\n"
+pose = "10 20 30\n0 90 0\n"
+frames = ("1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1 2\n" * 2)
+put("tdtk", "scan_only.bin", scan)
+put("tdtk", "scan_pose.bin", (scan + SEP.decode() + pose))
+put("tdtk", "two_scans_pose_frames.bin", SEP.join([scan.encode(), pose.encode(), scan.encode(), frames.encode()]))
+put("tdtk", "crlf.bin", SEP.join([crlf(scan).encode(), crlf(pose).encode()]))
+put("tdtk", "nan_inf_1e38.bin", "nan 0 0\ninf 1 1\n1e38 1e38 1e38\n1 2 3\n")
+put("tdtk", "pose_bad.bin", scan + SEP.decode() + "10 20\n0 0 0\n")
+put("tdtk", "pose_huge.bin", scan + SEP.decode() + "1e308 1e308 1e308\n1e300 0 0\n")
+put("tdtk", "frames_short.bin", SEP.join([scan.encode(), b"", scan.encode(), b"1 0 0 1\n"]))
+put("tdtk", "frames_16.bin", SEP.join([scan.encode(), b"", scan.encode(), b"1 0 0 0 0 1 0 0 0 0 1 0 5 5 5 1\n"]))
+put("tdtk", "empty_scan.bin", "")
+put("tdtk", "malformed_scan.bin", "1 2 3\nx y z\n")
+
+# ---------------------------------------------------------------- ROS map
+def pgm(w, h, pixels=None, maxval=255):
+    if pixels is None:
+        pixels = bytes(((x * 37 + y * 11) % 3) * 100 + 5 for y in range(h) for x in range(w))
+    return f"P5\n# seed\n{w} {h}\n{maxval}\n".encode() + pixels
+
+
+def png(w, h, raw_rows, bit_depth=8, colour=0):
+    def chunk(t, d):
+        return struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d) & 0xFFFFFFFF)
+    ihdr = struct.pack(">IIBBBBB", w, h, bit_depth, colour, 0, 0, 0)
+    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(raw_rows)) + chunk(b"IEND", b"")
+
+
+map_yaml = ("image: map.pgm\nmode: trinary\nresolution: 0.05\norigin: [-1.0, -2.0, 0.0]\n"
+            "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n")
+put("ros_map", "pgm.bin", map_yaml.encode() + SEP + pgm(8, 6))
+put("ros_map", "pgm_crlf_yaml.bin", crlf(map_yaml).encode() + SEP + pgm(4, 4))
+put("ros_map", "p2_ascii.bin", map_yaml.encode() + SEP + b"P2\n3 2\n255\n0 205 254\n254 0 205\n")
+put("ros_map", "png.bin", map_yaml.replace("map.pgm", "map.png").encode() + SEP
+    + png(4, 3, b"".join(b"\x00" + bytes([0, 205, 254, 100]) for _ in range(3))))
+put("ros_map", "png_huge_ihdr.bin", map_yaml.encode() + SEP + png(65536, 65536, b"\x00\x00"))
+put("ros_map", "pgm_huge_short.bin", map_yaml.encode() + SEP + b"P5\n100000 100000\n255\n\x00\x00")
+put("ros_map", "pgm_65536_short.bin", map_yaml.encode() + SEP + b"P5\n65536 65536\n255\n\x00\x00")
+put("ros_map", "pgm_16bit.bin", map_yaml.encode() + SEP + pgm(2, 2, b"\x00\x01\xff\xff\x80\x00\x00\x00", 65535))
+put("ros_map", "pgm_truncated.bin", map_yaml.encode() + SEP + pgm(8, 6)[:-10])
+put("ros_map", "image_empty.bin", map_yaml.encode() + SEP)
+put("ros_map", "image_missing.bin", map_yaml.replace("map.pgm", "nothere.pgm").encode() + SEP + pgm(2, 2))
+put("ros_map", "yaml_empty.bin", SEP + pgm(2, 2))
+put("ros_map", "yaml_not_map.bin", b"- 1\n- 2\n" + SEP + pgm(2, 2))
+put("ros_map", "resolution_zero.bin", map_yaml.replace("0.05", "0").encode() + SEP + pgm(2, 2))
+put("ros_map", "negate_nan_1e38.bin", map_yaml.replace("negate: 0", "negate: .nan").replace("0.65", "1e38").encode() + SEP + pgm(2, 2))
+put("ros_map", "negate_huge.bin", map_yaml.replace("negate: 0", "negate: 1e300").encode() + SEP + pgm(2, 2))
+put("ros_map", "origin_bad.bin", map_yaml.replace("[-1.0, -2.0, 0.0]", "[1, .inf]").encode() + SEP + pgm(2, 2))
+put("ros_map", "yaml_invalid.bin", b"image: [unclosed\nresolution: {\n" + SEP + pgm(2, 2))
+put("ros_map", "image_is_dir.bin", map_yaml.replace("map.pgm", ".").encode() + SEP + pgm(2, 2))
+
+# ---------------------------------------------------------------- config
+with open(os.path.join(HERE, "..", "..", "config", "default.yaml"), "rb") as f:
+    default_yaml = f.read()
+put("config", "default.yaml", default_yaml)
+put("config", "default_crlf.yaml", crlf(default_yaml))
+put("config", "empty.yaml", "")
+put("config", "typo.yaml", "voxel:\n  cel_m: 0.1\n")
+put("config", "unknown_section.yaml", "voxels:\n  cell_m: 0.1\n")
+put("config", "wrong_types.yaml", "level:\n  max_tilt_deg: steep\n  enabled: maybe\n")
+put("config", "nan_inf_1e38.yaml", "voxel:\n  cell_m: .nan\n  bounds_gap_m: .inf\nlayers:\n  wall_band_m: 1e38\n")
+put("config", "huge_ints.yaml", "input:\n  max_points: 1e30\nvoxel:\n  max_cells: -5\nlevel:\n  seed: 18446744073709551615\n")
+put("config", "int_fraction.yaml", "level:\n  iterations: 2.5\n  sample_points: 1e19\n")
+put("config", "scanners.yaml", "input:\n  scanners: [[0, 0, 1.5], [1, 2, 1.2]]\n  up_axis: y\n  unit_m: 0.01\n")
+put("config", "scanners_bad.yaml", "input:\n  scanners: [[0, 0], 5]\n  up_axis: x\n")
+put("config", "not_mapping.yaml", "- voxel\n- level\n")
+put("config", "section_scalar.yaml", "voxel: 5\n")
+put("config", "complex_key.yaml", "? [a, b]\n: 1\n")
+put("config", "deep_nesting.yaml", "[" * 300 + "]" * 300 + "\n")
+put("config", "anchors.yaml", "voxel: &v\n  cell_m: 0.1\nlayout: *v\n")
+put("config", "optional_null.yaml", "layers:\n  floor_z_m: ~\n  ceiling_z_m: 2.5\n")
