@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/io/map_io.hpp"
 #include "indoormap/io/render.hpp"
@@ -27,7 +28,49 @@ json band_json(const cloud::HeightBand& b) {
   return {{"lo_m", b.lo_m}, {"hi_m", b.hi_m}, {"layers", {b.lo_layer, b.hi_layer}}};
 }
 
+double ms_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+
 }  // namespace
+
+std::optional<AppSetup> setup_pipeline_app(CLI::App& app, PipelineCli& cli, int argc, char** argv,
+                                           int* exit_code) {
+  *exit_code = 0;
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    *exit_code = app.exit(e) == 0 ? 0 : static_cast<int>(ExitCode::kBadInput);
+    return std::nullopt;
+  }
+  AppSetup s{cli, resolve_config(cli), cli.out_dir, std::chrono::steady_clock::now()};
+  if (cli.print_config) {
+    std::cout << to_yaml(s.config);
+    return std::nullopt;
+  }
+  if (cli.inputs.empty()) throw UsageError("no input given (see --help)");
+  if (cli.out_dir.empty()) throw UsageError("no output directory given: use -o DIR");
+  ensure_writable_dir(s.out);
+  return s;
+}
+
+objects::ObjectsResult timed_objects(const layout::MapResult& m, const objects::ObjectParams& params,
+                                     double* ms) {
+  const auto t = std::chrono::steady_clock::now();
+  objects::ObjectsResult r = objects::extract_objects(m.layout.layout, m.geometry, m.voxels, m.layers, params);
+  *ms = ms_since(t);
+  return r;
+}
+
+void finish_summary(json& summary, const fs::path& out, std::vector<std::string> outputs,
+                    std::chrono::steady_clock::time_point write_start,
+                    std::chrono::steady_clock::time_point start) {
+  summary["timings_ms"]["write"] = ms_since(write_start);
+  summary["timings_ms"]["total"] = ms_since(start);
+  outputs.push_back("summary.json");
+  summary["outputs"] = outputs;
+  io::write_json(out / "summary.json", summary);
+}
 
 PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_input_points) {
   PipelineRun run;

@@ -7,9 +7,13 @@
 #include <string>
 #include <vector>
 
+#include <chrono>
+#include <optional>
+
 #include "cli.hpp"
 #include "indoormap/cloud/load.hpp"
 #include "indoormap/layout/pipeline.hpp"
+#include "indoormap/objects/objects.hpp"
 
 namespace indoormap::app {
 
@@ -21,6 +25,29 @@ struct PipelineRun {
   std::string scanner_source;  ///< "file", "config" or "estimated"
   double load_ms = 0.0;
 };
+
+/// What every pipeline app does before its own work.
+struct AppSetup {
+  PipelineCli cli;
+  PipelineConfig config;
+  std::filesystem::path out;
+  std::chrono::steady_clock::time_point start;
+};
+
+/// Parses the arguments (options of add_pipeline_options, already added to `app`), resolves the
+/// config, answers --help and --print-config, requires inputs and -o, and checks that the output
+/// directory is writable. nullopt: the app is done, with *exit_code set.
+std::optional<AppSetup> setup_pipeline_app(CLI::App& app, PipelineCli& cli, int argc, char** argv,
+                                           int* exit_code);
+
+/// The objects of the map, and the time they took.
+objects::ObjectsResult timed_objects(const layout::MapResult& map, const objects::ObjectParams& params,
+                                     double* ms);
+
+/// Adds the write and total timings and the output list to the summary, and writes it.
+void finish_summary(nlohmann::json& summary, const std::filesystem::path& out,
+                    std::vector<std::string> outputs, std::chrono::steady_clock::time_point write_start,
+                    std::chrono::steady_clock::time_point start);
 
 /// Loads every input and makes the map. An error about the data as a whole (no file named) is
 /// re-thrown naming all inputs.

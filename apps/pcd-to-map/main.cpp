@@ -33,54 +33,34 @@ int run(int argc, char** argv) {
       "Exit codes: 0 done, 2 bad usage or bad input, 3 no route (with --start/--goal), 1 other failure.");
   app::PipelineCli cli;
   app::add_pipeline_options(cli_app, cli);
-  try {
-    cli_app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return cli_app.exit(e) == 0 ? 0 : static_cast<int>(ExitCode::kBadInput);
-  }
-  const auto t_start = std::chrono::steady_clock::now();
-  app::PipelineConfig cfg = app::resolve_config(cli);
-  if (cli.print_config) {
-    std::cout << app::to_yaml(cfg);
-    return 0;
-  }
-  if (cli.inputs.empty()) throw UsageError("no input given (see --help)");
-  if (cli.out_dir.empty()) throw UsageError("no output directory given: use -o DIR");
-  const fs::path out = cli.out_dir;
-  ensure_writable_dir(out);
+  int code = 0;
+  auto setup = app::setup_pipeline_app(cli_app, cli, argc, argv, &code);
+  if (!setup) return code;
+  const auto& cfg = setup->config;
+  const fs::path& out = setup->out;
 
-  app::PipelineRun run = app::run_pipeline(cli, cfg, /*keep_input_points=*/false);
+  app::PipelineRun run = app::run_pipeline(setup->cli, setup->config, /*keep_input_points=*/false);
   const auto& m = run.map;
-  const auto t_objects = std::chrono::steady_clock::now();
-  const objects::ObjectsResult objs =
-      objects::extract_objects(m.layout.layout, m.geometry, m.voxels, m.layers, cfg.objects);
-  const double objects_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_objects).count();
+  double objects_ms = 0.0;
+  const objects::ObjectsResult objs = app::timed_objects(m, cfg.objects, &objects_ms);
 
   const auto t_write = std::chrono::steady_clock::now();
   std::vector<std::string> outputs = app::write_map_outputs(out, run);
   app::ObjectOutputs what;
   what.csv = what.picture = false;
   for (auto& f : app::write_object_outputs(out, m, objs, what)) outputs.push_back(f);
-
   json border_block = app::write_border_outputs(out, m, cfg.border);
-  const auto route = app::write_route_outputs(out, cli, cfg, m.layout.layout, m.geometry);  // --start/--goal
+  for (const auto& f : border_block["outputs"]) outputs.push_back(f.get<std::string>());
+  const auto route = app::write_route_outputs(out, setup->cli, cfg, m.layout.layout, m.geometry);  // --start/--goal
   if (route)
     for (const auto& f : route->summary.value("outputs", json::array())) outputs.push_back(f.get<std::string>());
-  for (const auto& f : border_block["outputs"]) outputs.push_back(f.get<std::string>());
 
   json summary = app::summary_json("pcd-to-map", run, cfg);
   summary["border"] = border_block;
   summary["route"] = route ? route->summary : json(nullptr);
   summary["objects"] = {{"count", objs.objects.size()}, {"file", "objects.json"}};
   summary["timings_ms"]["objects"] = objects_ms;
-  summary["timings_ms"]["write"] =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_write).count();
-  summary["timings_ms"]["total"] =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_start).count();
-  outputs.push_back("summary.json");
-  summary["outputs"] = outputs;
-  io::write_json(out / "summary.json", summary);
+  app::finish_summary(summary, out, outputs, t_write, setup->start);
 
   app::report("pcd-to-map", run);
   std::cout << "outputs written to " << out.string() << "\n";
