@@ -64,11 +64,14 @@ INSTANTIATE_TEST_SUITE_P(Targets, FuzzReplay, ::testing::ValuesIn(target_names()
 
 TEST(FuzzHarness, EveryCorpusDirectoryHasATarget) {
   EXPECT_GE(targets().size(), 6u);
-  for (const char* kind : {"corpus", "regressions"})
-    for (const auto& e : fs::directory_iterator(kFuzzDir / kind))
-      if (e.is_directory())
+  for (const char* kind : {"corpus", "regressions"}) {
+    for (const auto& e : fs::directory_iterator(kFuzzDir / kind)) {
+      if (e.is_directory()) {
         EXPECT_NE(find_target(e.path().filename().string()), nullptr)
             << e.path() << " has no fuzz target of that name";
+      }
+    }
+  }
 }
 
 TEST(FuzzHarness, SplitParts) {

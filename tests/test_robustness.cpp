@@ -80,11 +80,14 @@ TEST_P(PcdToMapRefuses, WithMessageExitCodeAndNoOutput) {
   const auto r = test::run_app("pcd-to-map", replace_all(c.args, "{d}", dir.string()));
   EXPECT_EQ(r.exit_code, c.exit_code) << r.err;
   EXPECT_NE(r.err.find(replace_all(c.expect, "{d}", dir.string())), std::string::npos) << r.err;
-  if (c.prefixed) EXPECT_EQ(r.err.rfind("pcd-to-map: ", 0), 0u) << r.err;
-  if (fs::is_regular_file(dir / "out"))
+  if (c.prefixed) {
+    EXPECT_EQ(r.err.rfind("pcd-to-map: ", 0), 0u) << r.err;
+  }
+  if (fs::is_regular_file(dir / "out")) {
     EXPECT_EQ(test::read_text(dir / "out"), "keep") << "clobbered";
-  else
+  } else {
     EXPECT_TRUE(!fs::exists(dir / "out") || fs::is_empty(dir / "out")) << "partial output";
+  }
 }
 
 const std::string kIn = "{d}/in";
