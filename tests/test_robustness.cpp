@@ -324,7 +324,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 // ------------------------------------------------------------------------------ loaders
 
-// Found by the PLY fuzz target: an element without properties and a huge count before the
+// Found writing the PLY fuzz target (fuzz_ply times out on it): an element without properties and a huge count before the
 // vertices looped count times (a hang, 2^64 iterations).
 TEST(LoaderRefuses, PlyEmptyElementWithHugeCountIsSkippedNotLooped) {
   const auto dir = test::scratch_dir();
