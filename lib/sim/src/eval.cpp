@@ -155,7 +155,7 @@ json parse_json_file(const fs::path& path) {
   if (!in) throw InputError(path.string(), "cannot open");
   try {
     return json::parse(in);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse errors, and out_of_range for numbers like 1e999
     throw InputError(path.string(), std::string("invalid JSON: ") + e.what());
   }
 }
