@@ -4,8 +4,8 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 scripts/setup.sh build
-cloud="clouds/office/cloud.pcd"
-[ -f "$cloud" ] || cloud="clouds/demo_room.xyz"
+cloud="clouds/office/cloud.pcd"  # simulated office, made by scene-sim (docs/scene-sim.md)
 out="out"
 build/bin/pcd-to-map "$cloud" -o "$out" "$@"
-echo "indoormap: outputs in $(pwd)/$out (map.pgm + map.yaml, layout.png, layout.pgm, summary.json)"
+echo "indoormap: outputs in $(pwd)/$out: map.pgm + map.yaml (ROS map), layout.png, layout.pgm, objects.json,"
+echo "           room.geojson, border.png, summary.json"
