@@ -106,14 +106,6 @@ Grid<std::uint8_t> hanging_mask(const Grid<std::uint8_t>& walls, const Grid<std:
 
 }  // namespace
 
-std::vector<HangingObject> find_hanging(const Grid<std::uint8_t>& walls,
-                                        const Grid<std::uint8_t>& support, double cell_m,
-                                        const LayoutParams& params) {
-  std::vector<HangingObject> out;
-  hanging_mask(walls, support, passage_area(walls), cell_m, params, &out);
-  return out;
-}
-
 Grid<std::uint8_t> passage_area(const Grid<std::uint8_t>& walls) {
   const int w = walls.width, h = walls.height;
   Grid<std::uint8_t> horiz(w, h, 0), out(w, h, 0);

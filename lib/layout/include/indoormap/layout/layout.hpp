@@ -55,11 +55,6 @@ struct LayoutResult {
   std::int64_t cells_wall = 0, cells_furniture = 0, cells_free = 0, cells_unknown = 0;
 };
 
-/// Wall-band components that are hanging objects (see LayoutParams), 8-connected.
-std::vector<HangingObject> find_hanging(const Grid<std::uint8_t>& walls,
-                                        const Grid<std::uint8_t>& support, double cell_m,
-                                        const LayoutParams& params);
-
 /// Builds M_r from M_w (walls) and M_f (furniture), both 0/1 grids of the same size, flooding
 /// free space from the scanners (map-frame x, y). With no scanner, the seed is the free cell
 /// farthest from any obstacle inside the passage area, and the result says so.
