@@ -153,10 +153,24 @@ namespace {
 json parse_json_file(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string(), "cannot open");
+  json j;
   try {
-    return json::parse(in);
+    j = json::parse(in);
   } catch (const json::exception& e) {  // parse errors, and out_of_range for numbers like 1e999
     throw InputError(path.string(), std::string("invalid JSON: ") + e.what());
+  }
+  if (!j.is_object()) throw InputError(path.string(), "the top level is not a JSON object");
+  return j;
+}
+
+// Any JSON access the readers did not check by hand (a value of an unexpected type deep in the
+// file) becomes an InputError naming the file, never an untyped exception.
+template <class F>
+auto guarded(const fs::path& path, F&& read) {
+  try {
+    return read();
+  } catch (const json::exception& e) {
+    throw InputError(path.string(), std::string("unexpected JSON content: ") + e.what());
   }
 }
 
@@ -193,7 +207,7 @@ const json& member(const json& j, const char* name, const fs::path& path, const 
 
 }  // namespace
 
-TruthFile read_truth_json(const fs::path& path) {
+TruthFile read_truth_json_unguarded(const fs::path& path) {
   const json j = parse_json_file(path);
   TruthFile t;
   t.path = path;
@@ -253,7 +267,7 @@ Grid<Cell> read_layout_pgm(const fs::path& path, const GridGeometry& expected) {
   return out;
 }
 
-std::vector<EvalObject> read_objects_json(const fs::path& path) {
+std::vector<EvalObject> read_objects_json_unguarded(const fs::path& path) {
   const json j = parse_json_file(path);
   const json& objects = member(j, "objects", path, "");
   if (!objects.is_array()) bad(path, "objects", "expected a list");
@@ -286,7 +300,7 @@ std::vector<EvalObject> read_objects_json(const fs::path& path) {
   return out;
 }
 
-std::vector<Polygon2> read_room_geojson(const fs::path& path) {
+std::vector<Polygon2> read_room_geojson_unguarded(const fs::path& path) {
   const json j = parse_json_file(path);
   if (j.value("type", "") != "FeatureCollection") bad(path, "type", "expected \"FeatureCollection\"");
   const json& features = member(j, "features", path, "");
@@ -304,6 +318,18 @@ std::vector<Polygon2> read_room_geojson(const fs::path& path) {
     out.push_back(polygon(rings[0], path, key + ".geometry.coordinates[0]"));
   }
   return out;
+}
+
+TruthFile read_truth_json(const fs::path& path) {
+  return guarded(path, [&] { return read_truth_json_unguarded(path); });
+}
+
+std::vector<EvalObject> read_objects_json(const fs::path& path) {
+  return guarded(path, [&] { return read_objects_json_unguarded(path); });
+}
+
+std::vector<Polygon2> read_room_geojson(const fs::path& path) {
+  return guarded(path, [&] { return read_room_geojson_unguarded(path); });
 }
 
 }  // namespace indoormap::sim
