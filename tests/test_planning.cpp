@@ -508,3 +508,20 @@ TEST(PlanRoute, OutputsErrorsAndExitCodes) {
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_NE(r.out.find("Examples"), std::string::npos);
 }
+
+TEST(PlanConfig, MalformedFilesAreTypedErrorsNamingFileAndLine) {
+  // The planner config shares the pipeline config's checks (apps/common/config_tree.hpp): a list
+  // used as a key or an unknown key is an InputError, never an untyped yaml-cpp exception.
+  const auto dir = test::scratch_dir();
+  test::write_text(dir / "list_key.yaml", "robot:\n  [a, b]: 1\n");
+  test::write_text(dir / "typo.yaml", "robot:\n  widht_m: 0.5\n");
+  for (const char* f : {"list_key.yaml", "typo.yaml"}) {
+    app::PlanConfig c;
+    try {
+      app::merge_plan_config_file(c, (dir / f).string());
+      FAIL() << f << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string(f) + ":2"), std::string::npos) << e.what();
+    }
+  }
+}

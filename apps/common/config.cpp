@@ -1,5 +1,7 @@
 #include "config.hpp"
 
+#include "config_tree.hpp"
+
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
@@ -150,7 +152,8 @@ struct Reader {
 
 }  // namespace
 
-void merge_config_file(PipelineConfig& config, const std::string& path) {
+YAML::Node load_config_tree(const std::string& path,
+                            const std::map<std::string, std::set<std::string>>& known) {
   YAML::Node root;
   try {
     std::ifstream in(path);
@@ -159,11 +162,10 @@ void merge_config_file(PipelineConfig& config, const std::string& path) {
   } catch (const YAML::Exception& e) {
     throw InputError(path, "invalid YAML: " + e.msg, static_cast<std::size_t>(e.mark.line + 1));
   }
-  if (root.IsNull()) return;  // an empty file means "all defaults"
+  if (root.IsNull()) return root;  // an empty file means "all defaults"
   if (!root.IsMap()) throw InputError(path, "the config must be a mapping of sections");
-
-  std::map<std::string, std::set<std::string>> known;
-  visit(config, [&](const char* s, const char* k, auto&) { known[s].insert(k); });
+  std::string sections;
+  for (const auto& [name, keys] : known) sections += (sections.empty() ? "" : ", ") + name;
   // A key that is not a string (a list or a mapping used as a key) is refused by name.
   auto key_of = [&](const YAML::Node& k) {
     if (!k.IsScalar())
@@ -175,9 +177,7 @@ void merge_config_file(PipelineConfig& config, const std::string& path) {
     const auto name = key_of(sec.first);
     const auto it = known.find(name);
     if (it == known.end())
-      throw InputError(path,
-                       "unknown section '" + name +
-                           "' (sections: input, level, voxel, layers, layout, objects, border, robot, safe_zone, planner)",
+      throw InputError(path, "unknown section '" + name + "' (sections: " + sections + ")",
                        static_cast<std::size_t>(sec.first.Mark().line + 1));
     if (sec.second.IsNull()) continue;
     if (!sec.second.IsMap())
@@ -190,6 +190,14 @@ void merge_config_file(PipelineConfig& config, const std::string& path) {
                          static_cast<std::size_t>(kv.first.Mark().line + 1));
     }
   }
+  return root;
+}
+
+void merge_config_file(PipelineConfig& config, const std::string& path) {
+  std::map<std::string, std::set<std::string>> known;
+  visit(config, [&](const char* s, const char* k, auto&) { known[s].insert(k); });
+  const YAML::Node root = load_config_tree(path, known);
+  if (root.IsNull()) return;
   visit(config, Reader{root, path});
 }
 

@@ -8,40 +8,16 @@
 #include <set>
 #include <type_traits>
 
+#include "config_tree.hpp"
 #include "indoormap/core/errors.hpp"
 
 namespace indoormap::app {
 
 void merge_plan_config_file(PlanConfig& config, const std::string& path) {
-  YAML::Node root;
-  try {
-    std::ifstream in(path);
-    if (!in) throw InputError(path, "cannot open the config file");
-    root = YAML::Load(in);
-  } catch (const YAML::Exception& e) {
-    throw InputError(path, "invalid YAML: " + e.msg, static_cast<std::size_t>(e.mark.line + 1));
-  }
-  if (root.IsNull()) return;  // an empty file means "all defaults"
-  if (!root.IsMap()) throw InputError(path, "the config must be a mapping of sections");
   std::map<std::string, std::set<std::string>> known;
   visit_plan(config, [&](const char* s, const char* k, auto&) { known[s].insert(k); });
-  for (const auto& sec : root) {
-    const auto name = sec.first.as<std::string>();
-    const auto it = known.find(name);
-    if (it == known.end())
-      throw InputError(path, "unknown section '" + name + "' (sections: robot, safe_zone, planner)",
-                       static_cast<std::size_t>(sec.first.Mark().line + 1));
-    if (sec.second.IsNull()) continue;
-    if (!sec.second.IsMap())
-      throw InputError(path, "section '" + name + "' must be a mapping",
-                       static_cast<std::size_t>(sec.second.Mark().line + 1));
-    for (const auto& kv : sec.second) {
-      const auto key = kv.first.as<std::string>();
-      if (!it->second.count(key))
-        throw InputError(path, "unknown key '" + name + "." + key + "'",
-                         static_cast<std::size_t>(kv.first.Mark().line + 1));
-    }
-  }
+  const YAML::Node root = load_config_tree(path, known);
+  if (root.IsNull()) return;
   visit_plan(config, [&](const char* s, const char* k, auto& v) {
     using T = std::decay_t<decltype(v)>;
     const YAML::Node sec = root[s];
