@@ -36,7 +36,8 @@ cloud::VoxelGrid voxels(int w, int h, int nz) {
   return g;
 }
 void fill_column(cloud::VoxelGrid& g, int c, int r, double z0, double z1, std::uint16_t n = 2) {
-  for (std::int64_t z = static_cast<std::int64_t>(z0 / g.cell_m); z < static_cast<std::int64_t>(z1 / g.cell_m); ++z)
+  for (std::int64_t z = static_cast<std::int64_t>(z0 / g.cell_m);
+       z < static_cast<std::int64_t>(z1 / g.cell_m); ++z)
     g.counts[(z * g.ny + r) * g.nx + c] = n;
 }
 
@@ -124,14 +125,16 @@ TEST(Objects, GeometryHeightsAndWallContactOnAHandMadeRoom) {
   EXPECT_NEAR(table.z_max_m, 0.725, 1e-9);  // the top layer's centre, not the lamp
   EXPECT_TRUE(table.on_floor);              // the leg reaches the floor
   EXPECT_FALSE(table.touches_wall);
-  EXPECT_NEAR(table.box.length_m, 0.20, 0.02);
-  EXPECT_NEAR(table.box.width_m, 0.15, 0.02);
+  // The footprint runs 1/8 cell outside the boundary cells' centres: 4 x 3 cells give
+  // (4 - 3/4) x (3 - 3/4) cells.
+  EXPECT_NEAR(table.box.length_m, 3.25 * 0.05, 1e-6);
+  EXPECT_NEAR(table.box.width_m, 2.25 * 0.05, 1e-6);
   EXPECT_NEAR(table.box.angle_deg, 0.0, 1.0);
   EXPECT_EQ(cabinet.cells, 6);
   EXPECT_TRUE(cabinet.touches_wall);
   EXPECT_NEAR(cabinet.z_max_m, 0.875, 1e-9);
-  EXPECT_EQ(cabinet.point_count, 6u * 2u * 18u);  // 6 columns x 2 points x layers 0..17 (z_min = floor)
-  // The footprint outlines follow the cell edges.
+  EXPECT_EQ(cabinet.point_count,
+            6u * 2u * 18u);  // 6 columns x 2 points x layers 0..17 (z_min = floor)
   double area2 = 0.0;
   for (std::size_t i = 0; i < table.footprint_m.size(); ++i) {
     const auto& a = table.footprint_m[i];
@@ -139,7 +142,43 @@ TEST(Objects, GeometryHeightsAndWallContactOnAHandMadeRoom) {
     area2 += a.x() * b.y() - b.x() * a.y();
   }
   EXPECT_GT(area2, 0.0);  // counter-clockwise
-  EXPECT_NEAR(area2 / 2, table.area_m2, 0.25 * table.area_m2);
+  EXPECT_NEAR(area2 / 2, 3.25 * 2.25 * 0.0025, 1e-9);
+  // A label the inset would split (cells joined at a corner only, 8-connectivity) keeps its cell
+  // outline: one polygon around both cells.
+  Grid<Cell> diag(6, 6, Cell::kFree);
+  diag.at(2, 2) = diag.at(3, 3) = Cell::kFurniture;
+  ObjectParams p8;
+  p8.connectivity = Connectivity::k8;
+  p8.min_area_m2 = 0.0;
+  const auto d =
+      extract_objects(diag, GridGeometry({0, 0}, 0.05, 6, 6), voxels(6, 6, 30), flat_layers(), p8);
+  ASSERT_EQ(d.objects.size(), 1u);
+  EXPECT_NEAR(d.objects[0].box.length_m, std::hypot(0.1, 0.1), 0.02);
+}
+
+TEST(Objects, ObjectsHighAboveTheFloorAreHanging) {
+  // A lamp low enough to reach the furniture band (1.6-1.8 m, nothing below it) and a cupboard
+  // standing on the floor: only the lamp is kind "hanging"; the threshold is configurable.
+  Grid<Cell> L(12, 6, Cell::kFree);
+  auto g = voxels(12, 6, 50);
+  for (int r = 2; r <= 3; ++r)
+    for (int c = 1; c <= 3; ++c) {
+      L.at(c, r) = L.at(c + 6, r) = Cell::kFurniture;
+      fill_column(g, c, r, 1.6, 1.8);
+      fill_column(g, c + 6, r, 0.0, 1.8);
+    }
+  const GridGeometry geo({0, 0}, 0.05, 12, 6);
+  ObjectParams p;
+  p.min_area_m2 = 0.0;
+  auto res = extract_objects(L, geo, g, flat_layers(), p);
+  ASSERT_EQ(res.objects.size(), 2u);
+  EXPECT_EQ(res.objects[0].kind, "hanging");
+  EXPECT_FALSE(res.objects[0].on_floor);
+  EXPECT_NEAR(res.objects[0].z_min_m, 1.6, 1e-9);
+  EXPECT_EQ(res.objects[1].kind, "furniture");
+  p.hanging_min_clearance_m = 1.7;
+  res = extract_objects(L, geo, g, flat_layers(), p);
+  EXPECT_EQ(res.objects[0].kind, "furniture");
 }
 
 TEST(Objects, TouchingObjectsOfDifferentHeightsAreSplit) {
@@ -168,7 +207,8 @@ TEST(Objects, RotatedRectangleGivesItsOrientedBox) {
   Grid<Cell> L(w, h, Cell::kFree);
   auto g = voxels(w, h, 20);
   const double ang = 30.0 * M_PI / 180.0;
-  const Eigen::Vector2d centre(2.0, 2.0), u(std::cos(ang), std::sin(ang)), v(-std::sin(ang), std::cos(ang));
+  const Eigen::Vector2d centre(2.0, 2.0), u(std::cos(ang), std::sin(ang)),
+      v(-std::sin(ang), std::cos(ang));
   for (int r = 0; r < h; ++r)
     for (int c = 0; c < w; ++c) {
       const Eigen::Vector2d d = geo.center_of({c, r}) - centre;
@@ -196,7 +236,9 @@ TEST(Objects, NoFurnitureIsAnEmptyListAndSmallObjectsAreDropped) {
   auto res = extract_objects(L, geo, g, flat_layers(), {});
   EXPECT_TRUE(res.objects.empty());
   EXPECT_EQ(res.labels.at(2, 2), 0);
-  EXPECT_TRUE(extract_objects(Grid<Cell>(), GridGeometry({0, 0}, 0.05, 0, 0), voxels(0, 0, 0), flat_layers(), {}).objects.empty());
+  EXPECT_TRUE(extract_objects(Grid<Cell>(), GridGeometry({0, 0}, 0.05, 0, 0), voxels(0, 0, 0),
+                              flat_layers(), {})
+                  .objects.empty());
   EXPECT_THROW(extract_objects(L, GridGeometry({0, 0}, 0.05, 4, 4), g, flat_layers(), {}), Error);
 }
 
@@ -229,8 +271,10 @@ TEST(Objects, CropHoldsExactlyThePointsOfTheRegion) {
     bool near = false;
     for (int dr = -1; dr <= 1; ++dr)
       for (int dc = -1; dc <= 1; ++dc)
-        near |= res.labels.contains(c.col + dc, c.row + dr) && res.labels.at(c.col + dc, c.row + dr) == o.id;
-    if (near && pts[i].z() >= o.z_min_m - margin && pts[i].z() <= o.z_max_m + margin) expected.insert(i);
+        near |= res.labels.contains(c.col + dc, c.row + dr) &&
+                res.labels.at(c.col + dc, c.row + dr) == o.id;
+    if (near && pts[i].z() >= o.z_min_m - margin && pts[i].z() <= o.z_max_m + margin)
+      expected.insert(i);
   }
   EXPECT_EQ(std::set<std::size_t>(crops[0].begin(), crops[0].end()), expected);
   EXPECT_GT(expected.size(), 100u);
@@ -275,6 +319,7 @@ SceneScore score_scene(std::uint64_t seed, double min_area_m2) {
     if (std::abs(sim::signed_area(t.footprint)) >= min_area_m2) truth_big.push_back(e);
   }
   for (const auto& o : objs.objects) {
+    if (o.kind == "hanging") continue;  // compared with floor items only, as map-eval does
     sim::EvalObject e{std::to_string(o.id), "", o.footprint_m, std::nullopt, std::nullopt, true};
     if (o.has_height) {
       e.z_min_m = o.z_min_m;
@@ -292,15 +337,43 @@ SceneScore score_scene(std::uint64_t seed, double min_area_m2) {
   r.matched_result = for_precision.matched;
   for (const auto& mt : for_recall.matches) {
     if (mt.z_max_error_m) r.height_errors_m.push_back(std::abs(*mt.z_max_error_m));
-    if (std::getenv("IM_DEBUG")) std::printf("  %s iou %.2f dz %.2f\n", mt.truth_id.c_str(), mt.iou, mt.z_max_error_m.value_or(99));
+    if (std::getenv("IM_DEBUG"))
+      std::printf("  %s iou %.2f dz %.2f\n", mt.truth_id.c_str(), mt.iou,
+                  mt.z_max_error_m.value_or(99));
   }
   if (std::getenv("IM_DEBUG")) {
-    for (const auto& id : for_recall.missed) std::printf("  missed %s\n", id.c_str());
+    for (const auto& id : for_recall.missed)
+      for (const auto& t : truth_big)
+        if (t.id == id) {
+          std::string best = "-";
+          double best_iou = 0.0;
+          for (const auto& o : result_all) {
+            const auto one = sim::evaluate_objects({t}, {o}, 0.0);
+            if (!one.matches.empty() && one.matches[0].iou > best_iou) {
+              best_iou = one.matches[0].iou;
+              best = o.id;
+            }
+          }
+          std::printf("  missed %s area %.2f best %s %.2f\n", id.c_str(),
+                      std::abs(sim::signed_area(t.footprint)), best.c_str(), best_iou);
+        }
     for (const auto& id : for_precision.spurious)
       for (const auto& o : objs.objects)
-        if (std::to_string(o.id) == id)
-          std::printf("  spurious %s area %.2f at %.2f,%.2f top %.2f\n", id.c_str(), o.area_m2, o.box.center_m.x(),
-                      o.box.center_m.y(), o.z_max_m);
+        if (std::to_string(o.id) == id) {
+          std::string best = "-";
+          double best_iou = 0.0;
+          for (const auto& t : truth_all) {
+            const auto one = sim::evaluate_objects(
+                {t}, {{id, "", o.footprint_m, std::nullopt, std::nullopt, true}}, 0.0);
+            if (!one.matches.empty() && one.matches[0].iou > best_iou) {
+              best_iou = one.matches[0].iou;
+              best = t.id;
+            }
+          }
+          std::printf("  spurious %s area %.2f at %.2f,%.2f top %.2f best %s %.2f\n", id.c_str(),
+                      o.area_m2, o.box.center_m.x(), o.box.center_m.y(), o.z_max_m, best.c_str(),
+                      best_iou);
+        }
   }
   return r;
 }
@@ -317,16 +390,19 @@ TEST(ObjectsAccuracy, TwentySimulatedScenes) {
     matched += s.matched_truth;
     matched_result += s.matched_result;
     errors.insert(errors.end(), s.height_errors_m.begin(), s.height_errors_m.end());
-    std::printf("scene %2llu: truth %2d result %2d matched %2d\n", static_cast<unsigned long long>(seed), s.truth,
-                s.result, s.matched_truth);
+    std::printf("scene %2llu: truth %2d result %2d matched %2d\n",
+                static_cast<unsigned long long>(seed), s.truth, s.result, s.matched_truth);
   }
   ASSERT_GT(truth, 50);
   const double recall = static_cast<double>(matched) / truth;
   const double precision = static_cast<double>(matched_result) / result;
   std::sort(errors.begin(), errors.end());
   const double median = errors.empty() ? 1e9 : errors[errors.size() / 2];
-  std::printf("objects >= 0.1 m2 in 20 scenes: truth %d, result %d, matched %d, recall %.3f, precision %.3f, "
-              "median |z_max error| %.3f m\n", truth, result, matched, recall, precision, median);
+  std::printf(
+      "objects >= 0.1 m2 in 20 scenes: truth %d, result %d, matched %d, recall %.3f, precision "
+      "%.3f, "
+      "median |z_max error| %.3f m\n",
+      truth, result, matched, recall, precision, median);
   // Issue 4 asks for recall and precision >= 0.9; today's figures (docs/evaluation.md) are
   // recall 0.82, precision 0.65, median height error 0.02 m. The bounds below guard them against
   // regressions; they are not the target.

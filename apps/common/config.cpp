@@ -1,7 +1,5 @@
 #include "config.hpp"
 
-#include "config_tree.hpp"
-
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
@@ -12,6 +10,7 @@
 #include <sstream>
 #include <type_traits>
 
+#include "config_tree.hpp"
 #include "indoormap/core/errors.hpp"
 
 namespace indoormap::app {
@@ -67,7 +66,6 @@ void visit(PipelineConfig& c, F&& f) {
   f("layout", "seed_search_radius_m", lo.seed_search_radius_m);
   f("layout", "hanging_max_area_m2", lo.hanging_max_area_m2);
   f("layout", "hanging_max_extent_m", lo.hanging_max_extent_m);
-  f("layout", "hanging_max_support", lo.hanging_max_support);
   f("layout", "hanging_gap_m", lo.hanging_gap_m);
   auto& ob = c.objects;
   f("objects", "min_area_m2", ob.min_area_m2);
@@ -75,6 +73,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("objects", "crop_margin_m", ob.crop_margin_m);
   f("objects", "split_height_step_m", ob.split_height_step_m);
   f("objects", "max_vertical_gap_m", ob.max_vertical_gap_m);
+  f("objects", "hanging_min_clearance_m", ob.hanging_min_clearance_m);
   f("objects", "top_percentile", ob.top_percentile);
   auto& bd = c.border;
   f("border", "dilate_full_size", bd.dilate_full_size);
@@ -94,14 +93,18 @@ void visit(PipelineConfig& c, F&& f) {
   visit_plan(c.plan, f);
 }
 
-std::string axis_name(cloud::UpAxis a) { return a == cloud::UpAxis::kY ? "y" : "z"; }
+std::string axis_name(cloud::UpAxis a) {
+  return a == cloud::UpAxis::kY ? "y" : "z";
+}
 
 struct Reader {
   const YAML::Node& root;
   const std::string& file;
 
-  [[noreturn]] void fail(const std::string& key, const YAML::Node& n, const std::string& what) const {
-    throw InputError(file, "key '" + key + "': " + what, static_cast<std::size_t>(n.Mark().line + 1));
+  [[noreturn]] void fail(const std::string& key, const YAML::Node& n,
+                         const std::string& what) const {
+    throw InputError(file, "key '" + key + "': " + what,
+                     static_cast<std::size_t>(n.Mark().line + 1));
   }
 
   template <class T>
@@ -118,12 +121,17 @@ struct Reader {
         v = k == 4 ? objects::Connectivity::k4 : objects::Connectivity::k8;
       } else if constexpr (std::is_same_v<T, cloud::UpAxis>) {
         const auto s = n.as<std::string>();
-        if (s == "z") v = cloud::UpAxis::kZ;
-        else if (s == "y") v = cloud::UpAxis::kY;
-        else fail(full, n, "expected 'z' or 'y', got '" + s + "'");
+        if (s == "z")
+          v = cloud::UpAxis::kZ;
+        else if (s == "y")
+          v = cloud::UpAxis::kY;
+        else
+          fail(full, n, "expected 'z' or 'y', got '" + s + "'");
       } else if constexpr (std::is_same_v<T, std::optional<double>>) {
-        if (n.IsNull()) v.reset();
-        else v = n.as<double>();
+        if (n.IsNull())
+          v.reset();
+        else
+          v = n.as<double>();
       } else if constexpr (std::is_same_v<T, std::vector<Eigen::Vector3d>>) {
         if (!n.IsSequence()) fail(full, n, "expected a list of [x, y, z]");
         v.clear();
@@ -221,19 +229,22 @@ void validate(const PipelineConfig& c) {
   require(vx.cell_m >= 0.001 && vx.cell_m <= 10, "voxel.cell_m: must be in [0.001, 10] m");
   require(vx.max_cells > 0, "voxel.max_cells: must be > 0");
   require(vx.bounds_gap_m > 0, "voxel.bounds_gap_m: must be > 0");
-  require(vx.bounds_sample > 0 && vx.bounds_sample <= 100'000'000, "voxel.bounds_sample: must be in [1, 1e8]");
+  require(vx.bounds_sample > 0 && vx.bounds_sample <= 100'000'000,
+          "voxel.bounds_sample: must be in [1, 1e8]");
   const auto& ly = c.map.layers;
   require(ly.min_points_per_voxel >= 1 && ly.min_points_per_voxel <= 65535,
           "layers.min_points_per_voxel: must be in [1, 65535]");
   require(ly.isolated_min_points >= 1, "layers.isolated_min_points: must be >= 1");
-  require(ly.floor_min_fraction > 0 && ly.floor_min_fraction <= 1, "layers.floor_min_fraction: must be in (0, 1]");
+  require(ly.floor_min_fraction > 0 && ly.floor_min_fraction <= 1,
+          "layers.floor_min_fraction: must be in (0, 1]");
   require(ly.ceiling_min_fraction > 0 && ly.ceiling_min_fraction <= 1,
           "layers.ceiling_min_fraction: must be in (0, 1]");
   require(ly.wall_band_m > 0, "layers.wall_band_m: must be > 0");
   require(ly.furniture_max_height_m > 0, "layers.furniture_max_height_m: must be > 0");
   require(ly.ceiling_onset_factor > 1, "layers.ceiling_onset_factor: must be > 1");
   require(ly.min_room_height_m >= 0, "layers.min_room_height_m: must be >= 0");
-  require(ly.floor_clearance_m >= 0 && ly.ceiling_clearance_m >= 0, "layers.*_clearance_m: must be >= 0");
+  require(ly.floor_clearance_m >= 0 && ly.ceiling_clearance_m >= 0,
+          "layers.*_clearance_m: must be >= 0");
   const auto& lo = c.map.layout;
   require(lo.furniture_closing_iterations >= 0 && lo.furniture_closing_iterations <= 20,
           "layout.furniture_closing_iterations: must be in [0, 20]");
@@ -246,12 +257,13 @@ void validate(const PipelineConfig& c) {
   require(lo.hanging_max_extent_m >= 0, "layout.hanging_max_extent_m: must be >= 0");
   const auto& ob = c.objects;
   require(ob.min_area_m2 >= 0, "objects.min_area_m2: must be >= 0");
-  require(ob.crop_margin_m >= 0 && ob.crop_margin_m <= 10, "objects.crop_margin_m: must be in [0, 10]");
+  require(ob.crop_margin_m >= 0 && ob.crop_margin_m <= 10,
+          "objects.crop_margin_m: must be in [0, 10]");
   require(ob.split_height_step_m >= 0, "objects.split_height_step_m: must be >= 0 (0: off)");
+  require(ob.hanging_min_clearance_m > 0, "objects.hanging_min_clearance_m: must be > 0");
   require(ob.max_vertical_gap_m > 0, "objects.max_vertical_gap_m: must be > 0");
-  require(ob.top_percentile >= 0 && ob.top_percentile <= 100, "objects.top_percentile: must be in [0, 100]");
-  require(lo.hanging_max_support >= 0 && lo.hanging_max_support <= 1,
-          "layout.hanging_max_support: must be in [0, 1]");
+  require(ob.top_percentile >= 0 && ob.top_percentile <= 100,
+          "objects.top_percentile: must be in [0, 100]");
   border::validate(c.border);  // throws UsageError naming border.<key>
   validate(c.plan);
 }
@@ -274,11 +286,14 @@ std::string to_yaml(const PipelineConfig& config) {
     } else if constexpr (std::is_same_v<T, cloud::UpAxis>) {
       out << axis_name(v);
     } else if constexpr (std::is_same_v<T, std::optional<double>>) {
-      if (v) out << *v;
-      else out << YAML::Null;
+      if (v)
+        out << *v;
+      else
+        out << YAML::Null;
     } else if constexpr (std::is_same_v<T, std::vector<Eigen::Vector3d>>) {
       out << YAML::Flow << YAML::BeginSeq;
-      for (const auto& p : v) out << YAML::Flow << YAML::BeginSeq << p.x() << p.y() << p.z() << YAML::EndSeq;
+      for (const auto& p : v)
+        out << YAML::Flow << YAML::BeginSeq << p.x() << p.y() << p.z() << YAML::EndSeq;
       out << YAML::EndSeq;
     } else {
       out << v;

@@ -26,7 +26,9 @@ struct Params {
   bool include_hanging = false;  ///< also expect lamps (not standing on the floor) as objects
 };
 
-std::size_t yaml_line(const YAML::Node& n) { return n.IsDefined() && n.Mark().line >= 0 ? n.Mark().line + 1 : 0; }
+std::size_t yaml_line(const YAML::Node& n) {
+  return n.IsDefined() && n.Mark().line >= 0 ? n.Mark().line + 1 : 0;
+}
 
 YAML::Node load_yaml(const fs::path& file) {
   try {
@@ -34,12 +36,14 @@ YAML::Node load_yaml(const fs::path& file) {
   } catch (const YAML::BadFile&) {
     throw InputError(file.string(), "cannot open");
   } catch (const YAML::Exception& e) {
-    throw InputError(file.string(), "invalid YAML: " + e.msg, e.mark.line >= 0 ? e.mark.line + 1 : 0);
+    throw InputError(file.string(), "invalid YAML: " + e.msg,
+                     e.mark.line >= 0 ? e.mark.line + 1 : 0);
   }
 }
 
 double yaml_number(const YAML::Node& n, const fs::path& file, const std::string& key) {
-  if (!n.IsDefined() || !n.IsScalar()) throw InputError(file.string(), "key '" + key + "': missing or not a number", yaml_line(n));
+  if (!n.IsDefined() || !n.IsScalar())
+    throw InputError(file.string(), "key '" + key + "': missing or not a number", yaml_line(n));
   try {
     const double v = n.as<double>();
     if (std::isfinite(v)) return v;
@@ -60,10 +64,12 @@ void apply_config(const fs::path& file, Params& p) {
       try {
         p.include_hanging = kv.second.as<bool>();
       } catch (const YAML::Exception&) {
-        throw InputError(file.string(), "key '" + k + "': expected true or false", yaml_line(kv.second));
+        throw InputError(file.string(), "key '" + k + "': expected true or false",
+                         yaml_line(kv.second));
       }
     } else {
-      throw InputError(file.string(), "unknown key '" + k + "' (expected min_object_iou, objects_include_hanging)",
+      throw InputError(file.string(),
+                       "unknown key '" + k + "' (expected min_object_iou, objects_include_hanging)",
                        yaml_line(kv.first));
     }
   }
@@ -72,33 +78,45 @@ void apply_config(const fs::path& file, Params& p) {
 }
 
 /// Grid geometry of a result layout: layout.yaml if present, else map.yaml (same grid).
-GridGeometry result_geometry(const fs::path& dir, const Grid<std::uint8_t>& image, std::string& source) {
+GridGeometry result_geometry(const fs::path& dir, const Grid<std::uint8_t>& image,
+                             std::string& source) {
   fs::path yaml = dir / "layout.yaml";
   if (!fs::exists(yaml)) yaml = dir / "map.yaml";
-  if (!fs::exists(yaml)) throw InputError((dir / "map.yaml").string(), "missing: layout.pgm needs map.yaml (or layout.yaml) for its resolution and origin");
+  if (!fs::exists(yaml))
+    throw InputError(
+        (dir / "map.yaml").string(),
+        "missing: layout.pgm needs map.yaml (or layout.yaml) for its resolution and origin");
   source = yaml.filename().string();
   const YAML::Node root = load_yaml(yaml);
   if (!root.IsMap()) throw InputError(yaml.string(), "expected a ROS map YAML mapping");
   const double res = yaml_number(root["resolution"], yaml, "resolution");
-  if (!(res > 0)) throw InputError(yaml.string(), "key 'resolution': must be positive", yaml_line(root["resolution"]));
+  if (!(res > 0))
+    throw InputError(yaml.string(), "key 'resolution': must be positive",
+                     yaml_line(root["resolution"]));
   const YAML::Node o = root["origin"];
-  if (!o.IsSequence() || o.size() < 2) throw InputError(yaml.string(), "key 'origin': expected [x, y, yaw]", yaml_line(o));
+  if (!o.IsSequence() || o.size() < 2)
+    throw InputError(yaml.string(), "key 'origin': expected [x, y, yaw]", yaml_line(o));
   const double ox = yaml_number(o[0], yaml, "origin[0]"), oy = yaml_number(o[1], yaml, "origin[1]");
   if (o.size() >= 3 && yaml_number(o[2], yaml, "origin[2]") != 0.0)
-    throw InputError(yaml.string(), "key 'origin': a rotated map (yaw != 0) is not supported", yaml_line(o));
+    throw InputError(yaml.string(), "key 'origin': a rotated map (yaw != 0) is not supported",
+                     yaml_line(o));
   return GridGeometry({ox, oy}, res, image.width, image.height);
 }
 
-ordered_json opt(const std::optional<double>& v) { return v ? ordered_json(*v) : ordered_json(nullptr); }
+ordered_json opt(const std::optional<double>& v) {
+  return v ? ordered_json(*v) : ordered_json(nullptr);
+}
 
 ordered_json layout_json(const sim::LayoutScores& s) {
   ordered_json j;
   ordered_json classes;
   for (int k = 0; k < 4; ++k) {
     const auto& c = s.classes[k];
-    classes[std::string(to_string(static_cast<Cell>(k)))] = {
-        {"iou", opt(c.iou)}, {"intersection_m2", c.intersection_m2}, {"union_m2", c.union_m2},
-        {"truth_m2", c.truth_m2}, {"result_m2", c.result_m2}};
+    classes[std::string(to_string(static_cast<Cell>(k)))] = {{"iou", opt(c.iou)},
+                                                             {"intersection_m2", c.intersection_m2},
+                                                             {"union_m2", c.union_m2},
+                                                             {"truth_m2", c.truth_m2},
+                                                             {"result_m2", c.result_m2}};
   }
   j["classes"] = classes;
   j["mean_iou"] = opt(s.mean_iou);
@@ -107,7 +125,8 @@ ordered_json layout_json(const sim::LayoutScores& s) {
   ordered_json conf;
   for (int t = 0; t < 4; ++t) {
     ordered_json row;
-    for (int r = 0; r < 4; ++r) row[std::string(to_string(static_cast<Cell>(r)))] = s.confusion_m2[t][r];
+    for (int r = 0; r < 4; ++r)
+      row[std::string(to_string(static_cast<Cell>(r)))] = s.confusion_m2[t][r];
     conf[std::string(to_string(static_cast<Cell>(t)))] = row;
   }
   j["confusion_m2"] = conf;
@@ -128,8 +147,11 @@ ordered_json objects_json(const sim::ObjectScores& s) {
   j["max_abs_height_error_m"] = opt(s.max_abs_height_error_m);
   ordered_json m = ordered_json::array();
   for (const auto& x : s.matches)
-    m.push_back({{"truth_id", x.truth_id}, {"result_id", x.result_id}, {"iou", x.iou},
-                 {"z_min_error_m", opt(x.z_min_error_m)}, {"z_max_error_m", opt(x.z_max_error_m)}});
+    m.push_back({{"truth_id", x.truth_id},
+                 {"result_id", x.result_id},
+                 {"iou", x.iou},
+                 {"z_min_error_m", opt(x.z_min_error_m)},
+                 {"z_max_error_m", opt(x.z_max_error_m)}});
   j["matches"] = m;
   j["missed"] = s.missed;
   j["spurious"] = s.spurious;
@@ -159,14 +181,19 @@ ordered_json rooms_json(const std::vector<sim::RoomMatch>& rooms) {
 }
 
 int run(int argc, char** argv) {
-  CLI::App app{"map-eval: compares pcd-to-map / furniture-extract results with a scene-sim ground truth and writes "
-               "eval.json (layout IoU per class, object recall / precision, room Hausdorff / area error)."};
+  CLI::App app{
+      "map-eval: compares pcd-to-map / furniture-extract results with a scene-sim ground truth and "
+      "writes "
+      "eval.json (layout IoU per class, object recall / precision, room Hausdorff / area error)."};
   app.footer(
       "Examples:\n"
       "  map-eval --truth clouds/office/ground_truth.json --result out\n"
-      "  map-eval --truth /tmp/scene7/ground_truth.json --result /tmp/scene7-out -o /tmp/eval7 --min-iou 0.4\n"
-      "Reads from RESULT: layout.pgm (+ layout.yaml or map.yaml), objects.json, room.geojson; each missing file\n"
-      "is reported as \"missing\" in eval.json. Exit codes: 0 done, 2 bad usage or input, 3 nothing to evaluate, 1 other.");
+      "  map-eval --truth /tmp/scene7/ground_truth.json --result /tmp/scene7-out -o /tmp/eval7 "
+      "--min-iou 0.4\n"
+      "Reads from RESULT: layout.pgm (+ layout.yaml or map.yaml), objects.json, room.geojson; each "
+      "missing file\n"
+      "is reported as \"missing\" in eval.json. Exit codes: 0 done, 2 bad usage or input, 3 "
+      "nothing to evaluate, 1 other.");
   std::string truth_file, result_dir, out_dir, config_file;
   Params p;
   bool print_config = false;
@@ -175,8 +202,10 @@ int run(int argc, char** argv) {
   app.add_option("--truth", truth_file, "ground_truth.json written by scene-sim");
   app.add_option("--result", result_dir, "Directory with the results to evaluate");
   app.add_option("-o,--out", out_dir, "Where to write eval.json (default: the result directory)");
-  app.add_option("-c,--config", config_file, "Config file (YAML; keys min_object_iou, objects_include_hanging)");
-  app.add_option("--min-iou", min_iou, "Footprint IoU needed to match an object (default 0.5)")->check(CLI::Range(0.01, 1.0));
+  app.add_option("-c,--config", config_file,
+                 "Config file (YAML; keys min_object_iou, objects_include_hanging)");
+  app.add_option("--min-iou", min_iou, "Footprint IoU needed to match an object (default 0.5)")
+      ->check(CLI::Range(0.01, 1.0));
   app.add_flag("--include-hanging", include_hanging, "Also count ceiling lamps as objects to find");
   app.add_flag("--print-config", print_config, "Print the effective parameters as YAML and exit");
   try {
@@ -193,7 +222,8 @@ int run(int argc, char** argv) {
               << "objects_include_hanging: " << (p.include_hanging ? "true" : "false") << "\n";
     return 0;
   }
-  if (truth_file.empty() || result_dir.empty()) throw UsageError("--truth FILE and --result DIR are required (see --help)");
+  if (truth_file.empty() || result_dir.empty())
+    throw UsageError("--truth FILE and --result DIR are required (see --help)");
   if (!fs::is_directory(result_dir)) throw InputError(result_dir, "result directory not found");
   if (out_dir.empty()) out_dir = result_dir;
   ensure_writable_dir(out_dir);
@@ -205,7 +235,8 @@ int run(int argc, char** argv) {
   report["version"] = kVersion;
   report["truth"] = truth_file;
   report["result"] = result_dir;
-  report["parameters"] = {{"min_object_iou", p.min_object_iou}, {"objects_include_hanging", p.include_hanging}};
+  report["parameters"] = {{"min_object_iou", p.min_object_iou},
+                          {"objects_include_hanging", p.include_hanging}};
   std::vector<std::string> missing;
   int evaluated = 0;
 
@@ -229,7 +260,11 @@ int run(int argc, char** argv) {
     std::vector<sim::EvalObject> expected;
     for (const auto& f : truth.furniture)
       if (f.on_floor || p.include_hanging) expected.push_back(f);
-    const auto objects = sim::read_objects_json(dir / "objects.json");
+    // Without --include-hanging both sides are what stands on the floor: result objects of kind
+    // "hanging" (lamps) are left out as the truth's lamps are.
+    auto objects = sim::read_objects_json(dir / "objects.json");
+    if (!p.include_hanging)
+      std::erase_if(objects, [](const sim::EvalObject& o) { return !o.on_floor; });
     ordered_json j = {{"status", "ok"}, {"file", "objects.json"}};
     j.update(objects_json(sim::evaluate_objects(expected, objects, p.min_object_iou)));
     report["objects"] = j;
@@ -252,8 +287,10 @@ int run(int argc, char** argv) {
   report["missing"] = missing;
   write_file_atomic(fs::path(out_dir) / "eval.json", report.dump(2) + "\n");
   if (evaluated == 0) {
-    std::fprintf(stderr, "map-eval: nothing to evaluate in %s (no layout.pgm, objects.json or room.geojson)\n",
-                 result_dir.c_str());
+    std::fprintf(
+        stderr,
+        "map-eval: nothing to evaluate in %s (no layout.pgm, objects.json or room.geojson)\n",
+        result_dir.c_str());
     return static_cast<int>(ExitCode::kNoResult);
   }
   std::fprintf(stderr, "map-eval: wrote %s\n", (fs::path(out_dir) / "eval.json").c_str());

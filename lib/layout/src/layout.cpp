@@ -13,7 +13,9 @@ namespace indoormap::layout {
 
 namespace {
 
-cv::Mat as_mat(Grid<std::uint8_t>& g) { return cv::Mat(g.height, g.width, CV_8U, g.data.data()); }
+cv::Mat as_mat(Grid<std::uint8_t>& g) {
+  return cv::Mat(g.height, g.width, CV_8U, g.data.data());
+}
 
 constexpr int kDx4[4] = {1, -1, 0, 0};
 constexpr int kDy4[4] = {0, 0, 1, -1};
@@ -47,7 +49,8 @@ std::string fmt_xy(const Eigen::Vector2d& p) {
   return s.str();
 }
 
-Grid<std::uint8_t> obstacles_of(const Grid<std::uint8_t>& walls, const Grid<std::uint8_t>& furniture) {
+Grid<std::uint8_t> obstacles_of(const Grid<std::uint8_t>& walls,
+                                const Grid<std::uint8_t>& furniture) {
   Grid<std::uint8_t> o(walls.width, walls.height, 0);
   for (std::size_t i = 0; i < o.size(); ++i) o.data[i] = walls.data[i] | furniture.data[i];
   return o;
@@ -61,10 +64,21 @@ Grid<std::uint8_t> hanging_mask(const Grid<std::uint8_t>& walls, const Grid<std:
                                 const LayoutParams& params, std::vector<HangingObject>* objects) {
   Grid<std::uint8_t> mask(walls.width, walls.height, 0);
   if (walls.width == 0 || walls.height == 0) return mask;
-  Grid<std::uint8_t> wcopy = walls;
+  // Candidates are the wall cells with no supported cell (see build_layout) within one cell: a
+  // lamp that touches a wall in the band is separated from it, because the wall goes on below.
+  Grid<std::uint8_t> wcopy(walls.width, walls.height, 0);
+  for (int r = 0; r < walls.height; ++r)
+    for (int c = 0; c < walls.width; ++c) {
+      if (!walls.at(c, r)) continue;
+      bool sup = false;
+      for (int dr = -1; dr <= 1 && !sup; ++dr)
+        for (int dc = -1; dc <= 1 && !sup; ++dc)
+          sup = support.contains(c + dc, r + dr) && support.at(c + dc, r + dr);
+      wcopy.at(c, r) = !sup;
+    }
   cv::Mat labels, stats, centroids;
-  const int n = cv::connectedComponentsWithStats(as_mat(wcopy), labels, stats, centroids, 8, CV_32S);
-  std::vector<std::int64_t> supported(static_cast<std::size_t>(n), 0);
+  const int n =
+      cv::connectedComponentsWithStats(as_mat(wcopy), labels, stats, centroids, 8, CV_32S);
   std::vector<std::uint8_t> at_boundary(static_cast<std::size_t>(n), 0);
   for (int r = 0; r < walls.height; ++r)
     for (int c = 0; c < walls.width; ++c) {
@@ -76,20 +90,15 @@ Grid<std::uint8_t> hanging_mask(const Grid<std::uint8_t>& walls, const Grid<std:
             at_boundary[lab] = 1;
             break;
           }
-      bool sup = false;
-      for (int dr = -1; dr <= 1 && !sup; ++dr)
-        for (int dc = -1; dc <= 1 && !sup; ++dc)
-          sup = support.contains(c + dc, r + dr) && support.at(c + dc, r + dr);
-      supported[lab] += sup;
     }
   const double cell_area = cell_m * cell_m;
   std::vector<std::uint8_t> is_hanging(static_cast<std::size_t>(n), 0);
   for (int lab = 1; lab < n; ++lab) {
     const std::int64_t area = stats.at<int>(lab, cv::CC_STAT_AREA);
     if (area * cell_area > params.hanging_max_area_m2 || at_boundary[lab]) continue;
-    const int extent = std::max(stats.at<int>(lab, cv::CC_STAT_WIDTH), stats.at<int>(lab, cv::CC_STAT_HEIGHT));
+    const int extent =
+        std::max(stats.at<int>(lab, cv::CC_STAT_WIDTH), stats.at<int>(lab, cv::CC_STAT_HEIGHT));
     if (extent * cell_m > params.hanging_max_extent_m) continue;
-    if (static_cast<double>(supported[lab]) > params.hanging_max_support * static_cast<double>(area)) continue;
     is_hanging[lab] = 1;
     HangingObject h;
     h.min_col = stats.at<int>(lab, cv::CC_STAT_LEFT);
@@ -146,9 +155,9 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
   Grid<std::uint8_t> walls = walls_in;
   if (support && (support->width != w || support->height != h))
     throw Error("build_layout: support map differs in size");
-  const Grid<std::uint8_t> hanging =
-      hanging_mask(walls_in, support ? *support : furniture, passage_area(obstacles_of(walls_in, furniture)),
-                   geo.cell_m(), params, &r.hanging);
+  const Grid<std::uint8_t> hanging = hanging_mask(walls_in, support ? *support : furniture,
+                                                  passage_area(obstacles_of(walls_in, furniture)),
+                                                  geo.cell_m(), params, &r.hanging);
   for (std::size_t i = 0; i < walls.size(); ++i) walls.data[i] &= !hanging.data[i];
   // The passes run over the obstacles of both bands. The paper uses the wall band alone, but one
   // gap in it (a window or a glass transom high up in a wall, as in the Jacobs lab) then opens
@@ -170,7 +179,8 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
     passable.data[i] = r.passage.data[i] && !walls.data[i] && !barrier.data[i];
 
   // Seeds: the scanner positions, moved to the nearest passable cell when they fall on an object.
-  const int radius = std::max(1, static_cast<int>(std::ceil(params.seed_search_radius_m / geo.cell_m())));
+  const int radius =
+      std::max(1, static_cast<int>(std::ceil(params.seed_search_radius_m / geo.cell_m())));
   for (const auto& s : scanners_map) {
     const CellIndex c = geo.cell_of(s);
     if (!geo.contains(c)) {
@@ -195,9 +205,9 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
     if (max_v > 0.0) {
       r.seeds.push_back({max_p.x, max_p.y});
       r.seeds_estimated = true;
-      r.warnings.push_back("no scanner position known: estimated at " +
-                           fmt_xy(geo.center_of(r.seeds.back())) +
-                           " (the free cell farthest from obstacles); pass --scanner X,Y,Z to set it");
+      r.warnings.push_back(
+          "no scanner position known: estimated at " + fmt_xy(geo.center_of(r.seeds.back())) +
+          " (the free cell farthest from obstacles); pass --scanner X,Y,Z to set it");
     } else {
       r.warnings.push_back("no free space inside the walls: the layout has no free class");
     }
@@ -231,7 +241,8 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
   for (std::size_t i = 0; i < pockets.size(); ++i)
     pockets.data[i] = passable.data[i] && !free_mask.data[i];
   cv::Mat labels, stats, centroids;
-  const int n = cv::connectedComponentsWithStats(as_mat(pockets), labels, stats, centroids, 4, CV_32S);
+  const int n =
+      cv::connectedComponentsWithStats(as_mat(pockets), labels, stats, centroids, 4, CV_32S);
   if (n > 1) {
     const double cell_area = geo.cell_m() * geo.cell_m();
     std::vector<std::uint8_t> touches(static_cast<std::size_t>(n), 0);
@@ -276,7 +287,8 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
         const int lab = obj_labels.at<int>(row, col);
         if (lab == 0 || keep[lab]) continue;
         for (int k = 0; k < 4; ++k)
-          if (free_mask.contains(col + kDx4[k], row + kDy4[k]) && free_mask.at(col + kDx4[k], row + kDy4[k]))
+          if (free_mask.contains(col + kDx4[k], row + kDy4[k]) &&
+              free_mask.at(col + kDx4[k], row + kDy4[k]))
             keep[lab] = 1;
       }
     for (int row = 0; row < h; ++row)
@@ -294,10 +306,18 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
       c = Cell::kFree;
     r.layout.data[i] = c;
     switch (c) {
-      case Cell::kWall: ++r.cells_wall; break;
-      case Cell::kFurniture: ++r.cells_furniture; break;
-      case Cell::kFree: ++r.cells_free; break;
-      case Cell::kUnknown: ++r.cells_unknown; break;
+      case Cell::kWall:
+        ++r.cells_wall;
+        break;
+      case Cell::kFurniture:
+        ++r.cells_furniture;
+        break;
+      case Cell::kFree:
+        ++r.cells_free;
+        break;
+      case Cell::kUnknown:
+        ++r.cells_unknown;
+        break;
     }
   }
   return r;

@@ -15,8 +15,8 @@ namespace indoormap::sim {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-LayoutScores evaluate_layout(const GridGeometry& tg, const Grid<Cell>& truth, const GridGeometry& rg,
-                             const Grid<Cell>& result) {
+LayoutScores evaluate_layout(const GridGeometry& tg, const Grid<Cell>& truth,
+                             const GridGeometry& rg, const Grid<Cell>& result) {
   LayoutScores s;
   // Count cells first, convert to m^2 once: exact for equal resolutions.
   std::array<std::array<std::int64_t, 4>, 4> by_result{}, by_truth{};
@@ -62,8 +62,8 @@ LayoutScores evaluate_layout(const GridGeometry& tg, const Grid<Cell>& truth, co
   return s;
 }
 
-ObjectScores evaluate_objects(const std::vector<EvalObject>& truth, const std::vector<EvalObject>& result,
-                              double min_iou) {
+ObjectScores evaluate_objects(const std::vector<EvalObject>& truth,
+                              const std::vector<EvalObject>& result, double min_iou) {
   ObjectScores s;
   s.truth_count = static_cast<int>(truth.size());
   s.result_count = static_cast<int>(result.size());
@@ -120,7 +120,8 @@ ObjectScores evaluate_objects(const std::vector<EvalObject>& truth, const std::v
   return s;
 }
 
-std::vector<RoomMatch> evaluate_rooms(const std::vector<TruthRoom>& truth, const std::vector<Polygon2>& result) {
+std::vector<RoomMatch> evaluate_rooms(const std::vector<TruthRoom>& truth,
+                                      const std::vector<Polygon2>& result) {
   std::vector<RoomMatch> out;
   for (std::size_t r = 0; r < result.size(); ++r) {
     RoomMatch m;
@@ -194,14 +195,17 @@ Polygon2 polygon(const json& j, const fs::path& path, const std::string& key) {
   if (!j.is_array()) bad(path, key, "expected a list of [x, y] points");
   if (j.size() > 1'000'000) bad(path, key, "more than 1,000,000 vertices");
   Polygon2 poly;
-  for (std::size_t i = 0; i < j.size(); ++i) poly.push_back(point(j[i], path, key + "[" + std::to_string(i) + "]"));
-  if (poly.size() >= 2 && (poly.front() - poly.back()).norm() < 1e-12) poly.pop_back();  // closed ring
+  for (std::size_t i = 0; i < j.size(); ++i)
+    poly.push_back(point(j[i], path, key + "[" + std::to_string(i) + "]"));
+  if (poly.size() >= 2 && (poly.front() - poly.back()).norm() < 1e-12)
+    poly.pop_back();  // closed ring
   if (poly.size() < 3) bad(path, key, "a polygon needs at least 3 distinct vertices");
   return poly;
 }
 
 const json& member(const json& j, const char* name, const fs::path& path, const std::string& key) {
-  if (!j.is_object() || !j.contains(name)) bad(path, key.empty() ? name : key + "." + name, "missing");
+  if (!j.is_object() || !j.contains(name))
+    bad(path, key.empty() ? name : key + "." + name, "missing");
   return j.at(name);
 }
 
@@ -212,7 +216,9 @@ TruthFile read_truth_json_unguarded(const fs::path& path) {
   TruthFile t;
   t.path = path;
   if (!j.is_object() || j.value("format", "") != "indoormap-ground-truth")
-    throw InputError(path.string(), "not a scene-sim ground truth (key 'format' must be \"indoormap-ground-truth\")");
+    throw InputError(
+        path.string(),
+        "not a scene-sim ground truth (key 'format' must be \"indoormap-ground-truth\")");
   const json& rooms = member(j, "rooms", path, "");
   if (!rooms.is_array()) bad(path, "rooms", "expected a list");
   for (std::size_t i = 0; i < rooms.size(); ++i) {
@@ -241,12 +247,14 @@ TruthFile read_truth_json_unguarded(const fs::path& path) {
   const json& image = member(layout, "image", path, "layout");
   if (!image.is_string()) bad(path, "layout.image", "expected a file name");
   t.layout_image = path.parent_path() / image.get<std::string>();
-  const double res = number(member(layout, "resolution", path, "layout"), path, "layout.resolution");
+  const double res =
+      number(member(layout, "resolution", path, "layout"), path, "layout.resolution");
   const json& origin = member(layout, "origin", path, "layout");
   const Eigen::Vector2d o = point(origin, path, "layout.origin");
   const double w = number(member(layout, "width", path, "layout"), path, "layout.width");
   const double h = number(member(layout, "height", path, "layout"), path, "layout.height");
-  if (!(res > 0) || w < 1 || h < 1 || w * h > 4e8) bad(path, "layout", "resolution / width / height out of range");
+  if (!(res > 0) || w < 1 || h < 1 || w * h > 4e8)
+    bad(path, "layout", "resolution / width / height out of range");
   t.layout_geometry = GridGeometry(o, res, static_cast<int>(w), static_cast<int>(h));
   return t;
 }
@@ -254,14 +262,16 @@ TruthFile read_truth_json_unguarded(const fs::path& path) {
 Grid<Cell> read_layout_pgm(const fs::path& path, const GridGeometry& expected) {
   const Grid<std::uint8_t> raw = read_pgm(path, true);
   if (expected.width() > 0 && (raw.width != expected.width() || raw.height != expected.height()))
-    throw InputError(path.string(), "image is " + std::to_string(raw.width) + " x " + std::to_string(raw.height) +
-                                        " but " + std::to_string(expected.width()) + " x " +
+    throw InputError(path.string(), "image is " + std::to_string(raw.width) + " x " +
+                                        std::to_string(raw.height) + " but " +
+                                        std::to_string(expected.width()) + " x " +
                                         std::to_string(expected.height()) + " was expected");
   Grid<Cell> out(raw.width, raw.height);
   for (std::size_t i = 0; i < raw.data.size(); ++i) {
     if (raw.data[i] > 3)
-      throw InputError(path.string(), "pixel value " + std::to_string(raw.data[i]) +
-                                          " is not a layout class 0..3 (is this map.pgm instead of layout.pgm?)");
+      throw InputError(path.string(),
+                       "pixel value " + std::to_string(raw.data[i]) +
+                           " is not a layout class 0..3 (is this map.pgm instead of layout.pgm?)");
     out.data[i] = static_cast<Cell>(raw.data[i]);
   }
   return out;
@@ -277,17 +287,25 @@ std::vector<EvalObject> read_objects_json_unguarded(const fs::path& path) {
     const json& o = objects[i];
     if (!o.is_object()) bad(path, key, "expected an object");
     EvalObject e;
-    if (o.contains("id")) e.id = o["id"].is_string() ? o["id"].get<std::string>() : o["id"].dump();
-    else e.id = std::to_string(i);
+    if (o.contains("id"))
+      e.id = o["id"].is_string() ? o["id"].get<std::string>() : o["id"].dump();
+    else
+      e.id = std::to_string(i);
     e.type = o.value("type", o.value("label", ""));
+    // furniture-extract's "hanging" objects (lamps) do not claim to stand on the floor.
+    if (o.contains("kind") && o["kind"].is_string())
+      e.on_floor = o["kind"].get<std::string>() != "hanging";
     if (o.contains("footprint")) {
       e.footprint = polygon(o["footprint"], path, key + ".footprint");
     } else if (o.contains("obb")) {
       const json& b = o["obb"];
-      const Eigen::Vector2d c = point(member(b, "center", path, key + ".obb"), path, key + ".obb.center");
+      const Eigen::Vector2d c =
+          point(member(b, "center", path, key + ".obb"), path, key + ".obb.center");
       const double w = number(member(b, "width_m", path, key + ".obb"), path, key + ".obb.width_m");
-      const double l = number(member(b, "length_m", path, key + ".obb"), path, key + ".obb.length_m");
-      const double a = number(member(b, "angle_deg", path, key + ".obb"), path, key + ".obb.angle_deg");
+      const double l =
+          number(member(b, "length_m", path, key + ".obb"), path, key + ".obb.length_m");
+      const double a =
+          number(member(b, "angle_deg", path, key + ".obb"), path, key + ".obb.angle_deg");
       if (!(w > 0 && l > 0)) bad(path, key + ".obb", "width_m and length_m must be positive");
       e.footprint = rectangle(c, {l, w}, a * std::numbers::pi / 180.0);
     } else {
@@ -302,7 +320,8 @@ std::vector<EvalObject> read_objects_json_unguarded(const fs::path& path) {
 
 std::vector<Polygon2> read_room_geojson_unguarded(const fs::path& path) {
   const json j = parse_json_file(path);
-  if (j.value("type", "") != "FeatureCollection") bad(path, "type", "expected \"FeatureCollection\"");
+  if (j.value("type", "") != "FeatureCollection")
+    bad(path, "type", "expected \"FeatureCollection\"");
   const json& features = member(j, "features", path, "");
   if (!features.is_array()) bad(path, "features", "expected a list");
   std::vector<Polygon2> out;
@@ -312,9 +331,11 @@ std::vector<Polygon2> read_room_geojson_unguarded(const fs::path& path) {
     if (!f.is_object() || !f.contains("properties") || !f["properties"].is_object()) continue;
     if (f["properties"].value("kind", "") != "room") continue;
     const json& g = member(f, "geometry", path, key);
-    if (g.value("type", "") != "Polygon") bad(path, key + ".geometry.type", "a room must be a Polygon");
+    if (g.value("type", "") != "Polygon")
+      bad(path, key + ".geometry.type", "a room must be a Polygon");
     const json& rings = member(g, "coordinates", path, key + ".geometry");
-    if (!rings.is_array() || rings.empty()) bad(path, key + ".geometry.coordinates", "expected a list of rings");
+    if (!rings.is_array() || rings.empty())
+      bad(path, key + ".geometry.coordinates", "expected a list of rings");
     out.push_back(polygon(rings[0], path, key + ".geometry.coordinates[0]"));
   }
   return out;

@@ -22,16 +22,15 @@ struct LayoutParams {
   /// every pocket furniture, which turns e.g. the notch of a U-shaped room into one big object.
   double enclosed_max_area_m2 = 4.0;
   double seed_search_radius_m = 1.0;  ///< an occupied scanner cell moves to the nearest free one
-  /// Wall-band objects that do not continue downwards are hanging (ceiling lamps, ducts): a
-  /// wall-band component is hanging when it covers at most hanging_max_area_m2 and at most
-  /// hanging_max_support of its cells have an obstacle within one cell in the support map (the
-  /// slice just below the wall band; a wall or a pillar continues there, a lamp above a table
-  /// does not). They are no obstacle for a robot on the floor; the paper leaves them in the wall
-  /// class.
+  /// Wall-band objects that do not continue downwards are hanging (ceiling lamps, ducts): the
+  /// wall cells with no support cell (see build_layout) within one cell form components; one
+  /// that covers at most hanging_max_area_m2, spans at most hanging_max_extent_m and lies inside
+  /// the room (not within two cells of the passage area's edge: the wall above a window or a door
+  /// has nothing below it either) is hanging. It is no obstacle for a robot on the floor; the
+  /// paper leaves it in the wall class.
   double hanging_max_area_m2 = 2.0;
   double hanging_max_extent_m = 1.5;  ///< longer components are walls seen above an occlusion
-  double hanging_gap_m = 0.3;  ///< thickness of the support slice below the wall band
-  double hanging_max_support = 0.3;
+  double hanging_gap_m = 0.3;         ///< thickness of the support slice below the wall band
 };
 
 /// A wall-band object with free floor beneath it (a lamp), removed from the wall class.
@@ -58,8 +57,8 @@ struct LayoutResult {
 /// Builds M_r from M_w (walls) and M_f (furniture), both 0/1 grids of the same size, flooding
 /// free space from the scanners (map-frame x, y). With no scanner, the seed is the free cell
 /// farthest from any obstacle inside the passage area, and the result says so.
-/// support: the obstacle map of the slice just below the wall band (see LayoutParams); when
-/// null, the furniture map stands in for it.
+/// support: the obstacle map of the slice hanging_gap_m thick just below the wall band (a wall
+/// or a pillar continues there, a lamp does not); when null, the furniture map stands in for it.
 LayoutResult build_layout(const Grid<std::uint8_t>& walls, const Grid<std::uint8_t>& furniture,
                           const GridGeometry& geometry,
                           const std::vector<Eigen::Vector2d>& scanners_map,

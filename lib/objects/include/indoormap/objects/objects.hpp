@@ -24,6 +24,10 @@ struct ObjectParams {
   double split_height_step_m = 0.15;  ///< pieces smaller than min_area_m2 after the split rejoin
                                       ///< the neighbour they share the longest border with
   double top_percentile = 90.0;  ///< [%] z_max: this percentile of the tops of the object's cells
+  /// An object whose lowest point is at least this far above the floor hangs (a ceiling lamp
+  /// low enough to reach the furniture band, a wall cupboard): kind "hanging", not furniture
+  /// standing on the floor. It stays an obstacle in M_r.
+  double hanging_min_clearance_m = 1.0;
   double max_vertical_gap_m = 0.3;  ///< a column's top is the highest point reachable from below
                                     ///< without an empty gap longer than this (a lamp above a table
                                     ///< is not the table's top)
@@ -37,20 +41,20 @@ struct OrientedBox {
 };
 
 struct FurnitureObject {
-  int id = 0;                       ///< 1.. in raster order of start_cell
-  std::string kind = "furniture";
+  int id = 0;                      ///< 1.. in raster order of start_cell
+  std::string kind = "furniture";  ///< "furniture" (stands on or near the floor) or "hanging"
   std::int64_t cells = 0;
-  CellIndex start_cell;             ///< first cell in raster order (row 0 first)
-  CellIndex min_cell, max_cell;     ///< bounding box in cells (inclusive)
+  CellIndex start_cell;          ///< first cell in raster order (row 0 first)
+  CellIndex min_cell, max_cell;  ///< bounding box in cells (inclusive)
   Eigen::Vector2d min_m = Eigen::Vector2d::Zero(), max_m = Eigen::Vector2d::Zero();  ///< map frame
   double area_m2 = 0.0;
   OrientedBox box;
   std::vector<Eigen::Vector2d> footprint_m;  ///< outline, map frame, counter-clockwise
-  bool has_height = false;          ///< false: no voxels above the footprint (filled-in cells)
+  bool has_height = false;              ///< false: no voxels above the footprint (filled-in cells)
   double z_min_m = 0.0, z_max_m = 0.0;  ///< map frame; z_min = floor height when it stands on it
   bool on_floor = false;
-  std::uint64_t point_count = 0;    ///< points above the footprint within [z_min, z_max]
-  bool touches_wall = false;        ///< a cell is 8-adjacent to a wall cell
+  std::uint64_t point_count = 0;  ///< points above the footprint within [z_min, z_max]
+  bool touches_wall = false;      ///< a cell is 8-adjacent to a wall cell
 };
 
 struct ObjectsResult {
