@@ -63,6 +63,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("layout", "furniture_closing_iterations", lo.furniture_closing_iterations);
   f("layout", "flood_barrier_closing", lo.flood_barrier_closing);
   f("layout", "enclosed_max_area_m2", lo.enclosed_max_area_m2);
+  f("layout", "passage_min_lines", lo.passage_min_lines);
   f("layout", "seed_search_radius_m", lo.seed_search_radius_m);
   f("layout", "hanging_max_area_m2", lo.hanging_max_area_m2);
   f("layout", "hanging_max_extent_m", lo.hanging_max_extent_m);
@@ -251,6 +252,8 @@ void validate(const PipelineConfig& c) {
   require(lo.flood_barrier_closing >= 0 && lo.flood_barrier_closing <= 10,
           "layout.flood_barrier_closing: must be in [0, 10]");
   require(lo.enclosed_max_area_m2 >= 0, "layout.enclosed_max_area_m2: must be >= 0");
+  require(lo.passage_min_lines >= 0 && lo.passage_min_lines <= 4,
+          "layout.passage_min_lines: must be in [0, 4] (0: the paper's row and column passes)");
   require(lo.seed_search_radius_m >= 0, "layout.seed_search_radius_m: must be >= 0");
   require(lo.hanging_max_area_m2 >= 0, "layout.hanging_max_area_m2: must be >= 0");
   require(lo.hanging_gap_m > 0, "layout.hanging_gap_m: must be > 0");

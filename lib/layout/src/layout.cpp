@@ -115,28 +115,28 @@ Grid<std::uint8_t> hanging_mask(const Grid<std::uint8_t>& walls, const Grid<std:
 
 }  // namespace
 
-Grid<std::uint8_t> passage_area(const Grid<std::uint8_t>& walls) {
+Grid<std::uint8_t> passage_area(const Grid<std::uint8_t>& walls, int min_lines) {
   const int w = walls.width, h = walls.height;
-  Grid<std::uint8_t> horiz(w, h, 0), out(w, h, 0);
-  for (int r = 0; r < h; ++r) {
-    int first = -1, last = -1;
-    for (int c = 0; c < w; ++c)
-      if (walls.at(c, r)) {
-        if (first < 0) first = c;
-        last = c;
-      }
-    for (int c = first; first >= 0 && c <= last; ++c) horiz.at(c, r) = 1;
-  }
-  for (int c = 0; c < w; ++c) {
-    int first = -1, last = -1;
+  // Per line direction: an obstacle at or before the cell along the line, and at or after it.
+  // Directions (dc, dr) with dr >= 0 and a predecessor (c - dc, r - dr) earlier in raster order.
+  const int dirs[4][2] = {{1, 0}, {0, 1}, {1, 1}, {-1, 1}};
+  const int n_dirs = min_lines <= 0 ? 2 : 4;
+  const int need = min_lines <= 0 ? 2 : std::min(min_lines, 4);
+  Grid<std::uint8_t> count(w, h, 0), before(w, h, 0), after(w, h, 0);
+  for (int d = 0; d < n_dirs; ++d) {
+    const int dc = dirs[d][0], dr = dirs[d][1];
     for (int r = 0; r < h; ++r)
-      if (walls.at(c, r)) {
-        if (first < 0) first = r;
-        last = r;
-      }
-    for (int r = first; first >= 0 && r <= last; ++r) out.at(c, r) = horiz.at(c, r);
+      for (int c = 0; c < w; ++c)
+        before.at(c, r) =
+            walls.at(c, r) || (before.contains(c - dc, r - dr) && before.at(c - dc, r - dr));
+    for (int r = h - 1; r >= 0; --r)
+      for (int c = w - 1; c >= 0; --c)
+        after.at(c, r) =
+            walls.at(c, r) || (after.contains(c + dc, r + dr) && after.at(c + dc, r + dr));
+    for (std::size_t i = 0; i < count.size(); ++i) count.data[i] += before.data[i] && after.data[i];
   }
-  return out;
+  for (auto& v : count.data) v = v >= need;
+  return count;
 }
 
 LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::uint8_t>& furniture,
@@ -155,15 +155,16 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
   Grid<std::uint8_t> walls = walls_in;
   if (support && (support->width != w || support->height != h))
     throw Error("build_layout: support map differs in size");
-  const Grid<std::uint8_t> hanging = hanging_mask(walls_in, support ? *support : furniture,
-                                                  passage_area(obstacles_of(walls_in, furniture)),
-                                                  geo.cell_m(), params, &r.hanging);
+  const Grid<std::uint8_t> hanging =
+      hanging_mask(walls_in, support ? *support : furniture,
+                   passage_area(obstacles_of(walls_in, furniture), params.passage_min_lines),
+                   geo.cell_m(), params, &r.hanging);
   for (std::size_t i = 0; i < walls.size(); ++i) walls.data[i] &= !hanging.data[i];
   // The passes run over the obstacles of both bands. The paper uses the wall band alone, but one
   // gap in it (a window or a glass transom high up in a wall, as in the Jacobs lab) then opens
   // every row or column through the gap, and the whole strip falls outside the room. The lower
   // part of the same wall closes the gap in the furniture band.
-  r.passage = passage_area(obstacles_of(walls, furniture));
+  r.passage = passage_area(obstacles_of(walls, furniture), params.passage_min_lines);
 
   // The flood is stopped by the furniture map closed with a 3x3 square: a scanner sees the front
   // of a cabinet as a speckled face, and a 4-connected flood would leak through its gaps into the

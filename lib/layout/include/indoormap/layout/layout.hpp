@@ -21,6 +21,11 @@ struct LayoutParams {
   /// become furniture (space behind / between objects); larger ones stay unknown. The paper makes
   /// every pocket furniture, which turns e.g. the notch of a U-shaped room into one big object.
   double enclosed_max_area_m2 = 4.0;
+  /// Passage area rule (passage_area): 0 = the paper's row AND column passes; k = bracketed by
+  /// obstacles along at least k of the 4 lines (row, column, diagonals). With the paper's rule one
+  /// gap in a wall (a doorway, the shadow of a pillar) drops every row through it from the room;
+  /// 3 of 4 keeps them, while an L-shaped room's notch (bracketed along one line) stays outside.
+  int passage_min_lines = 3;
   double seed_search_radius_m = 1.0;  ///< an occupied scanner cell moves to the nearest free one
   /// Wall-band objects that do not continue downwards are hanging (ceiling lamps, ducts): the
   /// wall cells with no support cell (see build_layout) within one cell form components; one
@@ -39,10 +44,12 @@ struct HangingObject {
   std::int64_t cells = 0;
 };
 
-/// Passage area (step 4): a cell is inside when, in its row and in its column, it lies between
-/// the first and the last obstacle (logical AND of the horizontal and vertical passes).
-/// Obstacle cells themselves are inside. Values: 0 outside, 1 inside.
-Grid<std::uint8_t> passage_area(const Grid<std::uint8_t>& walls);
+/// Passage area (step 4). min_lines <= 0, the paper's rule: a cell is inside when, in its row and
+/// in its column, it lies between the first and the last obstacle (logical AND of the horizontal
+/// and vertical passes). min_lines = k in 1..4: inside when it lies between obstacles along at
+/// least k of the four lines through it (row, column, both diagonals). Obstacle cells themselves
+/// are inside. Values: 0 outside, 1 inside.
+Grid<std::uint8_t> passage_area(const Grid<std::uint8_t>& walls, int min_lines = 0);
 
 struct LayoutResult {
   Grid<Cell> layout;                   ///< M_r
