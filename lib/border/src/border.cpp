@@ -827,7 +827,9 @@ std::optional<Polygon> fit_to_faces(const Polygon& poly, const Grid<Cell>& layou
   for (const auto& v : out)
     if (clean.empty() || (v - clean.back()).norm() > 1e-6) clean.push_back(v);
   while (clean.size() > 1 && (clean.front() - clean.back()).norm() <= 1e-6) clean.pop_back();
-  if (clean.size() < 3 || !is_simple(clean) || signed_area(clean) <= 0) return std::nullopt;
+  for (const auto& v : clean)
+    if (!v.allFinite()) return std::nullopt;
+  if (clean.size() < 3 || !is_simple(clean) || !(signed_area(clean) > 0)) return std::nullopt;
   return clean;
 }
 
