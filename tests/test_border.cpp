@@ -106,6 +106,7 @@ Room make_room(std::uint64_t seed, bool l_shape, int doors) {
       const double w = 0.7 + 0.4 * U(rng);
       const double s = 0.3 + (len - w - 0.6) * U(rng);
       const Eigen::Vector2d p = a + t * s, q = a + t * (s + w);
+      // The gap reaches into the free space, which stops a cell short of the face.
       fill(img,
            place({p + in * 0.06, q + in * 0.06, q - in * (wall_m + 0.2), p - in * (wall_m + 0.2)}),
            room.geo, static_cast<int>(Cell::kUnknown));
@@ -238,7 +239,7 @@ void debug_picture(const std::string& path, const Grid<Cell>& lay, const GridGeo
   draw(r.polygon_m, {0, 0, 255});
   cv::flip(img, img, 0);  // north up
   cv::imwrite(path, img);
-  std::cout << "[ sim ] picture " << path << ": x from " << geo.center_of({c0, r0}).x()
+  std::cout << "[ border ] picture " << path << ": x from " << geo.center_of({c0, r0}).x()
             << ", y from " << geo.center_of({c0, r0}).y() << " m (cell centres), " << k
             << " px per cell\n";
 }
@@ -340,9 +341,10 @@ TEST(Border, DoorGapsAreFoundWithTheirWidth) {
     EXPECT_EQ(r.openings.size(), room.doors.size()) << "seed " << seed << ": spurious openings";
   }
   EXPECT_GE(doors, 30);
-  // Every door is found; its width is within 0.12 m (and it is a door candidate) for at least 90 %
-  // of them. The rest are doors whose jamb is a furniture block or a corner (see the docs).
-  EXPECT_GE(good_width, doors * 9 / 10) << good_width << " of " << doors;
+  // Every door is found, a door candidate within 0.12 m of its width (before the hand-built walls
+  // marked the cell holding the face, 3 of 39 doors with a furniture block or a corner as a jamb
+  // measured wider).
+  EXPECT_EQ(good_width, doors) << good_width << " of " << doors;
   std::cout << "[ doors ] " << doors << " doors found, " << good_width
             << " with width within 0.12 m\n";
 }
