@@ -5,6 +5,10 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <random>
 #include <set>
@@ -88,7 +92,10 @@ Room make_room(std::uint64_t seed, bool l_shape, int doors) {
   room.face = place(local);
   cv::Mat img(400, 400, CV_8U, cv::Scalar(0));
   fill(img, place(offset_rectilinear(local, wall_m)), room.geo, static_cast<int>(Cell::kWall));
-  fill(img, room.face, room.geo, static_cast<int>(Cell::kFree));
+  // As in a scan, the cells holding the wall face are wall cells (a cell is marked when a point
+  // falls in it): the free space is the face polygon shrunk by one cell (cv::fillPoly also fills
+  // every cell its boundary touches, half a cell beyond the polygon).
+  fill(img, place(offset_rectilinear(local, -kCell)), room.geo, static_cast<int>(Cell::kFree));
   // Edges 0 .. doors-1 get a door; the others a furniture block against the wall.
   const std::size_t n = local.size();
   for (std::size_t e = 0; e < n; ++e) {
@@ -99,8 +106,9 @@ Room make_room(std::uint64_t seed, bool l_shape, int doors) {
       const double w = 0.7 + 0.4 * U(rng);
       const double s = 0.3 + (len - w - 0.6) * U(rng);
       const Eigen::Vector2d p = a + t * s, q = a + t * (s + w);
+      // The gap reaches into the free space, which stops a cell short of the face.
       fill(img,
-           place({p - in * 0.01, q - in * 0.01, q - in * (wall_m + 0.2), p - in * (wall_m + 0.2)}),
+           place({p + in * 0.06, q + in * 0.06, q - in * (wall_m + 0.2), p - in * (wall_m + 0.2)}),
            room.geo, static_cast<int>(Cell::kUnknown));
       room.doors.push_back({centre + R * (p - c0), centre + R * (q - c0), w});
     } else if (len > 1.2) {
@@ -166,6 +174,100 @@ double hausdorff(const Polygon& a, const Polygon& b) {
   return h;
 }
 
+// Debug picture (written when INDOORMAP_BORDER_DEBUG names a directory), cropped to the true
+// polygon: the layout (unknown black, wall grey, furniture brown, free white), heavy-border cells
+// dotted green, chain cells blue, the chain polygon cyan, the result red, the truth green.
+void debug_picture(const std::string& path, const Grid<Cell>& lay, const GridGeometry& geo,
+                   const border::BorderResult& r, const Polygon& truth) {
+  int k = 8;
+  Eigen::Vector2d lo = truth[0], hi = truth[0];
+  for (const auto& v : truth) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  lo -= Eigen::Vector2d(0.6, 0.6);
+  hi += Eigen::Vector2d(0.6, 0.6);
+  // INDOORMAP_BORDER_DEBUG_BOX="x0,y0,x1,y1" (map m): a close-up at 16 px per cell.
+  if (const char* box = std::getenv("INDOORMAP_BORDER_DEBUG_BOX")) {
+    double v[4];
+    if (std::sscanf(box, "%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3]) == 4) {
+      lo = {v[0], v[1]};
+      hi = {v[2], v[3]};
+      k = 16;
+    }
+  }
+  const CellIndex a = geo.cell_of(lo), b = geo.cell_of(hi);
+  const int c0 = std::max(0, a.col), r0 = std::max(0, a.row);
+  const int c1 = std::min(lay.width - 1, b.col), r1 = std::min(lay.height - 1, b.row);
+  if (c1 < c0 || r1 < r0) return;
+  cv::Mat img((r1 - r0 + 1) * k, (c1 - c0 + 1) * k, CV_8UC3);
+  for (int row = r0; row <= r1; ++row)
+    for (int c = c0; c <= c1; ++c) {
+      cv::Scalar col(0, 0, 0);
+      switch (lay.at(c, row)) {
+        case Cell::kWall:
+          col = {90, 90, 90};
+          break;
+        case Cell::kFurniture:
+          col = {60, 120, 180};
+          break;
+        case Cell::kFree:
+          col = {255, 255, 255};
+          break;
+        default:
+          break;
+      }
+      const cv::Rect cell((c - c0) * k, (row - r0) * k, k, k);
+      img(cell).setTo(col);
+      if (r.heavy.size() && r.heavy.at(c, row))
+        img(cv::Rect(cell.x + 1, cell.y + 1, 2, 2)).setTo(cv::Scalar(0, 160, 0));
+    }
+  for (const auto& c : r.chain)
+    if (c.col >= c0 && c.col <= c1 && c.row >= r0 && c.row <= r1)
+      img(cv::Rect((c.col - c0) * k + 3, (c.row - r0) * k + 3, 3, 3)).setTo(cv::Scalar(255, 0, 0));
+  auto draw = [&](const Polygon& p, const cv::Scalar& colour) {
+    std::vector<cv::Point> pts;
+    for (const auto& v : p) {
+      const Eigen::Vector2d u =
+          ((v - geo.origin_m()) / geo.cell_m() - Eigen::Vector2d(c0, r0)) * k * 16;
+      pts.emplace_back(static_cast<int>(std::lround(u.x())), static_cast<int>(std::lround(u.y())));
+    }
+    cv::polylines(img, std::vector<std::vector<cv::Point>>{pts}, true, colour, 1, cv::LINE_AA, 4);
+  };
+  draw(r.chain_polygon_m, {255, 255, 0});
+  draw(truth, {0, 200, 0});
+  draw(r.polygon_m, {0, 0, 255});
+  cv::flip(img, img, 0);  // north up
+  cv::imwrite(path, img);
+  std::cout << "[ border ] picture " << path << ": x from " << geo.center_of({c0, r0}).x()
+            << ", y from " << geo.center_of({c0, r0}).y() << " m (cell centres), " << k
+            << " px per cell\n";
+}
+
+// Per true edge: the mean distance from its points (20-80 % of its length) to the result
+// boundary in mm, negative where the result lies inside the truth (debug output).
+std::string edge_offsets_mm(const Polygon& truth, const Polygon& result) {
+  std::string out;
+  for (std::size_t e = 0; e < truth.size(); ++e) {
+    double sum = 0.0;
+    int cnt = 0;
+    for (double f = 0.2; f <= 0.8; f += 0.05) {
+      const Eigen::Vector2d q = truth[e] + (truth[(e + 1) % truth.size()] - truth[e]) * f;
+      double best = 1e300;
+      for (std::size_t i = 0; i < result.size(); ++i) {
+        const auto u = result[i], v = result[(i + 1) % result.size()];
+        const double t = std::clamp((q - u).dot(v - u) / (v - u).squaredNorm(), 0.0, 1.0);
+        best = std::min(best, (u + (v - u) * t - q).norm());
+      }
+      sum += border::contains(result, q) ? best : -best;
+      ++cnt;
+    }
+    out += ' ';
+    out += std::to_string(std::lround(1000 * sum / cnt));
+  }
+  return out;
+}
+
 }  // namespace
 
 TEST(BorderPolygon, HelpersOnHandCheckableShapes) {
@@ -227,24 +329,31 @@ TEST(Border, DoorGapsAreFoundWithTheirWidth) {
       const border::Opening* found = nullptr;
       for (const auto& o : r.openings)
         if ((0.5 * (o.a_m + o.b_m) - mid).norm() < 0.3) found = &o;
+      std::string seen;
+      for (const auto& o : r.openings) {
+        const Eigen::Vector2d om = 0.5 * (o.a_m + o.b_m);
+        seen += " (" + std::to_string(om.x()) + ", " + std::to_string(om.y()) + ")";
+      }
       ASSERT_NE(found, nullptr) << "seed " << seed << ": door at (" << mid.x() << ", " << mid.y()
-                                << ") not found";
+                                << ") not found; openings at" << seen;
       if (std::abs(found->width_m - d.width_m) <= 0.12 && found->is_door_candidate) ++good_width;
     }
     EXPECT_EQ(r.openings.size(), room.doors.size()) << "seed " << seed << ": spurious openings";
   }
   EXPECT_GE(doors, 30);
-  // Every door is found; its width is within 0.12 m (and it is a door candidate) for at least 90 %
-  // of them. The rest are doors whose jamb is a furniture block or a corner (see the docs).
-  EXPECT_GE(good_width, doors * 9 / 10) << good_width << " of " << doors;
+  // Every door is found, a door candidate within 0.12 m of its width (before the hand-built walls
+  // marked the cell holding the face, 3 of 39 doors with a furniture block or a corner as a jamb
+  // measured wider).
+  EXPECT_EQ(good_width, doors) << good_width << " of " << doors;
   std::cout << "[ doors ] " << doors << " doors found, " << good_width
             << " with width within 0.12 m\n";
 }
 
-// Accuracy against the true wall faces on hand-built layouts (the scene simulator has not landed
-// on main yet). The targets are Hausdorff <= 0.15 m and area error <= 3 %; on these
-// rotated rooms with 1-3 cell walls we reach them for most rooms but not all
-// (docs/border-closure.md): the median must meet them, the worst case is bounded at 0.35 m / 6 %.
+// Accuracy against the true wall faces on hand-built layouts: rotated rectangles and L-shapes with
+// 1-3 cell walls, furniture against the walls and door gaps without lintels. The targets
+// are Hausdorff <= 0.15 m and area error <= 3 %; every room is within 0.15 m, the area error
+// within 4 % (docs/border-closure.md). INDOORMAP_BORDER_DEBUG=DIR prints every room's figures
+// and writes DIR/room_<seed>.png.
 TEST(Border, AccuracyAgainstTrueWallFaces) {
   double worst_h = 0.0, worst_a = 0.0;
   std::vector<double> hs, as;
@@ -252,24 +361,28 @@ TEST(Border, AccuracyAgainstTrueWallFaces) {
     const Room room = make_room(seed, seed % 3 == 0, static_cast<int>(seed % 2));
     const auto r = border::close_border(room.layout, room.geo, {room.scanner});
     ASSERT_TRUE(r.closed) << r.reason;
+    if (const char* dir = std::getenv("INDOORMAP_BORDER_DEBUG"))
+      debug_picture(std::string(dir) + "/room_" + std::to_string(seed) + ".png", room.layout,
+                    room.geo, r, room.face);
     const double h = hausdorff(r.polygon_m, room.face);
     const double true_area = border::signed_area(room.face);
     const double rel = std::abs(r.area_m2 - true_area) / true_area;
-    EXPECT_LE(h, 0.35) << "seed " << seed << (r.warnings.empty() ? "" : ": " + r.warnings[0]);
-    EXPECT_LE(rel, 0.06) << "seed " << seed << ": area " << r.area_m2 << " vs " << true_area;
+    EXPECT_LE(h, 0.15) << "seed " << seed << (r.warnings.empty() ? "" : ": " + r.warnings[0]);
+    EXPECT_LE(rel, 0.04) << "seed " << seed << ": area " << r.area_m2 << " vs " << true_area;
     hs.push_back(h);
     as.push_back(rel);
-    if (std::getenv("BORDER_DEBUG"))
-      std::cout << seed << " true " << true_area << " poly " << r.area_m2 << " chainpoly "
-                << border::signed_area(r.chain_polygon_m) << " h " << h << " hchain "
-                << hausdorff(r.chain_polygon_m, room.face) << "\n";
+    if (std::getenv("INDOORMAP_BORDER_DEBUG"))
+      std::cout << "[ accuracy ] seed " << seed << " true " << true_area << " poly " << r.area_m2
+                << " chainpoly " << border::signed_area(r.chain_polygon_m) << " h " << h
+                << " hchain " << hausdorff(r.chain_polygon_m, room.face) << " edge offsets"
+                << edge_offsets_mm(room.face, r.polygon_m) << " mm\n";
     worst_h = std::max(worst_h, h);
     worst_a = std::max(worst_a, rel);
   }
   std::sort(hs.begin(), hs.end());
   std::sort(as.begin(), as.end());
-  EXPECT_LE(hs[hs.size() / 2], 0.15);
-  EXPECT_LE(as[as.size() / 2], 0.03);
+  EXPECT_LE(hs[hs.size() / 2], 0.075);
+  EXPECT_LE(as[as.size() / 2], 0.015);
   const auto within = std::count_if(hs.begin(), hs.end(), [](double h) { return h <= 0.15; });
   std::cout << "[ accuracy ] 25 hand-built rooms: median Hausdorff " << hs[hs.size() / 2]
             << " m (worst " << worst_h << ", " << within << "/25 <= 0.15 m), median area error "
@@ -376,9 +489,18 @@ TEST(BorderJacobs, OneClosedRoughlyRectangularPolygonWithTheDoor) {
 // with doors to a corridor), scanned from inside without tilt so the map frame is the scene frame.
 // The targets: Hausdorff <= 0.15 m to the true polygon (wall faces), area error <= 3 %,
 // every door of the room found as an opening. The figures are printed and listed in
-// docs/border-closure.md; the assertions below are what the implementation meets today.
+// docs/border-closure.md. Every scene closes and every door is found; the targets are met on
+// every scene whose layout (lib/layout) covers the room. On 4 of the 20 the layout leaves 10-23 %
+// of the room unknown (sloped ceilings; an L whose wing wall is seen too sparsely for the passage
+// rule): no border drawn on that layout can reach the missing part, and those scenes are only
+// reported.
+//
+// INDOORMAP_BORDER_DEBUG=DIR prints the figures of every scene and writes DIR/sim_<seed>.png
+// (INDOORMAP_BORDER_DEBUG_SEED=N: only that scene; INDOORMAP_BORDER_DEBUG_BOX=x0,y0,x1,y1: a
+// close-up of that box in map metres).
 TEST(BorderSim, AccuracyOnSimulatedScenes) {
   int scenes = 0, closed = 0, doors = 0, doors_found = 0, within_h = 0, within_a = 0;
+  int covered = 0;  // scenes whose layout leaves less than 1 % of the room unknown
   std::vector<double> hs, as;
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     sim::Scene scene = sim::random_scene(seed, {.rooms = 1, .scanner_in_corridor = false});
@@ -396,6 +518,20 @@ TEST(BorderSim, AccuracyOnSimulatedScenes) {
     for (const auto& rm : norm.rooms)
       if (rm.kind == sim::RoomKind::kRoom) room = &rm;
     ASSERT_NE(room, nullptr);
+    // The share of the true room that the layout leaves unknown (not wall, furniture or free).
+    std::int64_t in_room = 0, unknown = 0;
+    for (int row = 0; row < m.geometry.height(); ++row)
+      for (int col = 0; col < m.geometry.width(); ++col)
+        if (border::contains(room->polygon, m.geometry.center_of({col, row}))) {
+          ++in_room;
+          unknown += m.layout.layout.at(col, row) == Cell::kUnknown;
+        }
+    const double unknown_share = in_room ? static_cast<double>(unknown) / in_room : 1.0;
+    const char* debug_dir = std::getenv("INDOORMAP_BORDER_DEBUG");
+    const char* debug_seed = std::getenv("INDOORMAP_BORDER_DEBUG_SEED");
+    if (debug_dir && (!debug_seed || std::to_string(seed) == debug_seed))
+      debug_picture(std::string(debug_dir) + "/sim_" + std::to_string(seed) + ".png",
+                    m.layout.layout, m.geometry, r, room->polygon);
     if (!r.closed) {
       std::cout << "[ sim ] seed " << seed << ": not closed: " << r.reason << "\n";
       continue;
@@ -407,6 +543,23 @@ TEST(BorderSim, AccuracyOnSimulatedScenes) {
     as.push_back(std::abs(match[0].area_error_rel));
     within_h += match[0].hausdorff_m <= 0.15;
     within_a += std::abs(match[0].area_error_rel) <= 0.03;
+    if (unknown_share < 0.01) {
+      ++covered;
+      EXPECT_LE(match[0].hausdorff_m, 0.15) << "seed " << seed;
+      EXPECT_LE(std::abs(match[0].area_error_rel), 0.03) << "seed " << seed;
+      EXPECT_TRUE(r.warnings.empty()) << "seed " << seed << ": " << r.warnings[0];
+    }
+    if (debug_dir) {
+      const auto chain_match =
+          sim::evaluate_rooms({{room->name, "room", room->polygon}}, {r.chain_polygon_m});
+      std::cout << "[ sim ] seed " << seed << ": Hausdorff " << match[0].hausdorff_m
+                << " m, area error " << 100 * match[0].area_error_rel << " % (chain polygon "
+                << chain_match[0].hausdorff_m << " m, " << 100 * chain_match[0].area_error_rel
+                << " %), " << room->polygon.size() << " corners, " << r.polygon_m.size()
+                << " vertices, " << 100 * unknown_share << " % of the room unknown"
+                << (r.warnings.empty() ? "" : "; " + r.warnings[0]) << "; edge offsets"
+                << edge_offsets_mm(room->polygon, r.polygon_m) << " mm\n";
+    }
     const auto& poly = room->polygon;
     for (const auto& d : room->doors) {
       ++doors;
@@ -420,13 +573,19 @@ TEST(BorderSim, AccuracyOnSimulatedScenes) {
   }
   std::sort(hs.begin(), hs.end());
   std::sort(as.begin(), as.end());
+  ASSERT_FALSE(hs.empty());
   std::cout << "[ sim ] " << scenes << " scenes, " << closed
             << " closed; Hausdorff <= 0.15 m: " << within_h << ", area error <= 3 %: " << within_a
-            << "; median Hausdorff " << (hs.empty() ? 0 : hs[hs.size() / 2])
-            << " m, median area error " << (as.empty() ? 0 : 100 * as[as.size() / 2])
+            << " (layout covers the room in " << covered << "); median Hausdorff "
+            << hs[hs.size() / 2] << " m, median area error " << 100 * as[as.size() / 2]
             << " %; doors found " << doors_found << " / " << doors << "\n";
   EXPECT_EQ(scenes, 20);
-  EXPECT_GE(closed, 18);
-  EXPECT_EQ(doors_found, doors);  // every door of every closed room
-  EXPECT_GT(doors, 10);
+  EXPECT_EQ(closed, 20);
+  EXPECT_EQ(doors_found, doors);  // every door of every room
+  EXPECT_EQ(doors, 20);
+  EXPECT_GE(covered, 16);  // the targets hold on each of them (above)
+  EXPECT_GE(within_h, 16);
+  EXPECT_GE(within_a, 16);
+  EXPECT_LE(hs[hs.size() / 2], 0.05);
+  EXPECT_LE(as[as.size() / 2], 0.02);
 }

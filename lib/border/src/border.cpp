@@ -510,6 +510,329 @@ std::optional<Polygon> snap_to_faces(const Polygon& poly, const Grid<Cell>& layo
   return out;
 }
 
+// ---- Polygon from the wall faces --------------------------------------------------------------
+//
+// The wall face lies inside the wall cells that touch room space: a wall cell is marked when a
+// point of the face falls in it, so the face runs through those cells and their centres are an
+// unbiased sample of it (the room-side cell boundary is half a cell too far in, on average).
+
+struct FacePoint {
+  Eigen::Vector2d p;         // wall cell centre (cell units)
+  Eigen::Vector2d room_dir;  // unit direction towards its room-space 8-neighbours
+};
+
+bool room_space(Cell v) {
+  return v == Cell::kFree || v == Cell::kFurniture;
+}
+
+// Wall cells with a room-space 4-neighbour inside the box [lo, hi] (cell units, clamped to one
+// cell beyond the grid). Cells just outside the grid count as wall cells: the map's robust bounds
+// crop the outermost points, so a room touching the map edge has its wall face there.
+std::vector<FacePoint> face_points(const Grid<Cell>& layout, const Eigen::Vector2d& lo,
+                                   const Eigen::Vector2d& hi) {
+  std::vector<FacePoint> out;
+  const int c0 = std::max(-1, static_cast<int>(std::floor(lo.x()))),
+            r0 = std::max(-1, static_cast<int>(std::floor(lo.y())));
+  const int c1 = std::min(layout.width, static_cast<int>(std::ceil(hi.x()))),
+            r1 = std::min(layout.height, static_cast<int>(std::ceil(hi.y())));
+  for (int r = r0; r <= r1; ++r)
+    for (int c = c0; c <= c1; ++c) {
+      if (layout.contains(c, r) && layout.at(c, r) != Cell::kWall) continue;
+      bool touches = false;
+      Eigen::Vector2d dir = Eigen::Vector2d::Zero();
+      for (int k = 0; k < 8; ++k) {
+        const int nc = c + kDc[k], nr = r + kDr[k];
+        if (!layout.contains(nc, nr) || !room_space(layout.at(nc, nr))) continue;
+        dir += Eigen::Vector2d(kDc[k], kDr[k]).normalized();
+        if (k < 4) touches = true;
+      }
+      if (!touches || dir.squaredNorm() < 1e-12) continue;
+      out.push_back({Eigen::Vector2d(c, r), dir.normalized()});
+    }
+  return out;
+}
+
+// A straight wall face: the line through c along the unit vector u (the room lies to its left).
+struct FaceLine {
+  Eigen::Vector2d c = Eigen::Vector2d::Zero(), u = Eigen::Vector2d::UnitX();
+  std::vector<Eigen::Vector2d> inliers;  // the face points it was fitted to (empty: not fitted)
+  Eigen::Vector2d a = Eigen::Vector2d::Zero(), b = Eigen::Vector2d::Zero();  // chain edge
+  Eigen::Vector2d normal() const { return {-u.y(), u.x()}; }
+  double length() const { return (b - a).norm(); }
+};
+
+// Total least squares line through pts; the direction is oriented along hint.
+void fit_tls(const std::vector<Eigen::Vector2d>& pts, const Eigen::Vector2d& hint, FaceLine& line) {
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (const auto& p : pts) mean += p;
+  mean /= static_cast<double>(pts.size());
+  double sxx = 0, sxy = 0, syy = 0;
+  for (const auto& p : pts) {
+    const Eigen::Vector2d d = p - mean;
+    sxx += d.x() * d.x();
+    sxy += d.x() * d.y();
+    syy += d.y() * d.y();
+  }
+  const double angle = 0.5 * std::atan2(2 * sxy, sxx - syy);
+  Eigen::Vector2d u(std::cos(angle), std::sin(angle));
+  if (u.dot(hint) < 0) u = -u;
+  line.c = mean;
+  line.u = u;
+}
+
+double median_of(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+// Robust fit of one edge's wall face: the face points beside the edge (from out_reach outside the
+// chain to in_reach inside it) whose room lies on the inner side, a median start, then total least
+// squares with outliers beyond 2.5 robust sigmas (at least 1 cell) dropped. The direction may turn
+// by at most 30 degrees from the edge's; otherwise it keeps the edge's direction.
+void fit_edge(const std::vector<FacePoint>& faces, double out_reach, double in_reach,
+              FaceLine& line) {
+  const Eigen::Vector2d a = line.a, t = (line.b - line.a).normalized();
+  const Eigen::Vector2d n(-t.y(), t.x());
+  const double len = (line.b - line.a).norm();
+  std::vector<Eigen::Vector2d> cand;
+  std::vector<double> offs;
+  for (const auto& f : faces) {
+    const Eigen::Vector2d d = f.p - a;
+    const double s = d.dot(t), o = d.dot(n);
+    if (s < -1.0 || s > len + 1.0 || o < -out_reach || o > in_reach) continue;
+    if (f.room_dir.dot(n) < 0.5) continue;  // the room is not on this edge's inner side
+    cand.push_back(f.p);
+    offs.push_back(o);
+  }
+  line.inliers.clear();
+  if (cand.size() < 4) return;
+  const double o_med = median_of(offs);
+  line.u = t;
+  line.c = a + n * o_med;
+  double th = 2.0;
+  for (int iter = 0; iter < 4; ++iter) {
+    std::vector<Eigen::Vector2d> in;
+    const Eigen::Vector2d ln = line.normal();
+    for (const auto& p : cand)
+      if (std::abs((p - line.c).dot(ln)) <= th) in.push_back(p);
+    if (in.size() < 4) return;
+    line.inliers = in;
+    fit_tls(in, t, line);
+    if (line.u.dot(t) < std::cos(30.0 * M_PI / 180.0)) {  // keep the edge's direction
+      line.u = t;
+      Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+      for (const auto& p : in) mean += p;
+      line.c = mean / static_cast<double>(in.size());
+    }
+    std::vector<double> r2;
+    for (const auto& p : in) r2.push_back(std::abs((p - line.c).dot(line.normal())));
+    th = std::max(1.0, 2.5 * 1.4826 * median_of(r2));
+  }
+}
+
+std::optional<Eigen::Vector2d> intersect(const FaceLine& l1, const FaceLine& l2) {
+  const double cr = l1.u.x() * l2.u.y() - l1.u.y() * l2.u.x();
+  if (std::abs(cr) < 1e-9) return std::nullopt;
+  const Eigen::Vector2d d = l2.c - l1.c;
+  const double t = (d.x() * l2.u.y() - d.y() * l2.u.x()) / cr;
+  return l1.c + l1.u * t;
+}
+
+double angle_between(const FaceLine& l1, const FaceLine& l2) {
+  return std::acos(std::clamp(l1.u.dot(l2.u), -1.0, 1.0));
+}
+
+// The polygon from the wall faces (cell units; poly is the simplified counter-clockwise chain
+// polygon, which gives the order of the faces):
+//  1. every edge of poly is fitted to the face points beside it (fit_edge); an edge without face
+//     points (a door's mouth, a gap in the scan) lies at the median depth of the fitted ones;
+//  2. consecutive lines of one straight face are merged;
+//  3. a bump of at most max_bump cells between two lines of one face (a door recess) is bridged
+//     along that face;
+//  4. the weakest line its neighbours explain is dropped, so that the neighbours meet at their
+//     intersection: the corners the chain cuts (convex or concave), chamfers fitted to the two
+//     walls of a corner, wiggles of the chain at windows;
+//  5. the vertices are the intersections of consecutive lines (nearly parallel ones, a step in
+//     the wall, are joined where the chain joins them).
+// nullopt when a corner strays far from the chain, or the result is not simple or not
+// counter-clockwise (the caller then falls back to snap_to_faces).
+std::optional<Polygon> fit_to_faces(const Polygon& poly, const Grid<Cell>& layout, double max_shift,
+                                    double max_bump) {
+  const std::size_t n0 = poly.size();
+  if (n0 < 3 || max_shift <= 0) return std::nullopt;
+  const double out_reach = 4.0, in_reach = max_shift + 1.5;
+  Eigen::Vector2d lo = poly[0], hi = poly[0];
+  for (const auto& v : poly) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  const auto faces = face_points(layout, lo.array() - out_reach - 1, hi.array() + out_reach + 1);
+  std::vector<FaceLine> lines(n0);
+  std::vector<double> depth;
+  for (std::size_t i = 0; i < n0; ++i) {
+    lines[i].a = poly[i];
+    lines[i].b = poly[(i + 1) % n0];
+    fit_edge(faces, out_reach, in_reach, lines[i]);
+    if (!lines[i].inliers.empty())
+      depth.push_back((lines[i].c - lines[i].a).dot(lines[i].normal()));
+  }
+  if (depth.empty()) return std::nullopt;
+  const double global = std::clamp(median_of(depth), 0.0, max_shift);
+  for (auto& l : lines)
+    if (l.inliers.empty()) {
+      l.u = (l.b - l.a).normalized();
+      l.c = l.a + l.normal() * global;
+    }
+  auto supported = [](const FaceLine& l) { return !l.inliers.empty(); };
+  auto dist = [](const FaceLine& l, const Eigen::Vector2d& p) {
+    return std::abs((p - l.c).dot(l.normal()));
+  };
+  // One straight face: nearly the same direction and each line through the other's points.
+  auto same_face = [&](const FaceLine& l1, const FaceLine& l2) {
+    if (angle_between(l1, l2) > 8.0 * M_PI / 180.0) return false;
+    return dist(l1, l2.c) <= 1.5 && dist(l2, l1.c) <= 1.5;
+  };
+  auto refit = [](FaceLine& l) {
+    if (l.inliers.size() >= 2) fit_tls(l.inliers, l.b - l.a, l);
+  };
+  constexpr double kTol = 1.5;  // [cells] a face point this close to a line lies on it
+  const double chamfer_max = 2.0 * max_shift + 4.0;
+  for (bool changed = true; changed && lines.size() > 3;) {
+    changed = false;
+    const std::size_t m = lines.size();
+    // Merge two consecutive fitted lines of one face.
+    for (std::size_t i = 0; i < m && !changed; ++i) {
+      FaceLine& l1 = lines[i];
+      FaceLine& l2 = lines[(i + 1) % m];
+      if (!supported(l1) || !supported(l2) || !same_face(l1, l2)) continue;
+      l1.b = l2.b;
+      l1.inliers.insert(l1.inliers.end(), l2.inliers.begin(), l2.inliers.end());
+      refit(l1);
+      lines.erase(lines.begin() + static_cast<std::ptrdiff_t>((i + 1) % m));
+      changed = true;
+    }
+    if (changed) continue;
+    // A bump of the chain between two lines of one face (a door recess without a lintel: the
+    // chain runs round the jambs and across the door's mouth): its edges are short or have no
+    // face of their own, and the two lines are joined across it.
+    for (std::size_t i = 0; i < m && !changed; ++i) {
+      for (std::size_t k = 2; k <= 4 && k + 1 < m && !changed; ++k) {
+        const std::size_t j = (i + k) % m;
+        if (!supported(lines[i]) || !supported(lines[j]) || !same_face(lines[i], lines[j]))
+          continue;
+        double span = 0.0;
+        bool weak = true;
+        for (std::size_t q = 1; q < k; ++q) {
+          const FaceLine& l = lines[(i + q) % m];
+          span += l.length();
+          weak &= !supported(l) || l.length() <= chamfer_max;
+        }
+        if (!weak || span > max_bump) continue;
+        FaceLine& l1 = lines[i];
+        l1.b = lines[j].b;
+        l1.inliers.insert(l1.inliers.end(), lines[j].inliers.begin(), lines[j].inliers.end());
+        refit(l1);
+        std::vector<FaceLine> kept;
+        for (std::size_t q = 0; q < m; ++q) {
+          bool drop = false;
+          for (std::size_t d = 1; d <= k; ++d) drop |= q == (i + d) % m;
+          if (!drop) kept.push_back(std::move(lines[q]));
+        }
+        lines = std::move(kept);
+        changed = true;
+      }
+    }
+    if (changed) continue;
+    // Drop the weakest line that its neighbours explain: an unfitted edge between two lines of
+    // one face or between two lines meeting near it (a corner the chain cuts, convex or
+    // concave); a fitted one whose face points (at least 80 %) lie on its neighbours' lines (a
+    // chamfer fitted to the two walls of a corner, a wiggle of the chain at a window).
+    std::vector<std::size_t> order(m);
+    for (std::size_t i = 0; i < m; ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
+      return lines[x].inliers.size() < lines[y].inliers.size();
+    });
+    for (const std::size_t i : order) {
+      FaceLine& prev = lines[(i + m - 1) % m];
+      FaceLine& cur = lines[i];
+      FaceLine& next = lines[(i + 1) % m];
+      const bool parallel = angle_between(prev, next) < 10.0 * M_PI / 180.0;
+      if (parallel && !same_face(prev, next)) continue;  // a step: cur joins the two faces
+      if (!parallel) {
+        const auto x = intersect(prev, next);
+        if (!x || (*x - cur.a).norm() > chamfer_max || (*x - cur.b).norm() > chamfer_max) continue;
+      }
+      if (supported(cur)) {
+        if (cur.inliers.size() > std::min(prev.inliers.size(), next.inliers.size())) continue;
+        std::size_t explained = 0;
+        for (const auto& p : cur.inliers)
+          explained += std::min(dist(prev, p), dist(next, p)) <= kTol;
+        if (explained < 0.8 * static_cast<double>(cur.inliers.size())) continue;
+        for (const auto& p : cur.inliers) {
+          if (dist(prev, p) <= dist(next, p)) {
+            if (dist(prev, p) <= kTol) prev.inliers.push_back(p);
+          } else if (dist(next, p) <= kTol) {
+            next.inliers.push_back(p);
+          }
+        }
+        if (supported(prev)) refit(prev);
+        if (supported(next)) refit(next);
+      }
+      prev.b = cur.b;  // the chain edge of prev now reaches over cur's
+      lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(i));
+      changed = true;
+      break;
+    }
+  }
+  // Corners. A line whose two corners come out in reverse order along it (a short line at a
+  // corner whose neighbours cross before reaching it) is dropped, and the corners recomputed.
+  Polygon out;
+  while (lines.size() >= 3) {
+    const std::size_t m = lines.size();
+    std::vector<Eigen::Vector2d> start(m), end(m);
+    std::vector<std::uint8_t> step(m, 0);  // 1: lines[i - 1] and lines[i] are joined by a step
+    for (std::size_t i = 0; i < m; ++i) {
+      const std::size_t p = (i + m - 1) % m;
+      const FaceLine& prev = lines[p];
+      const FaceLine& cur = lines[i];
+      const auto x = intersect(prev, cur);
+      if (!x || angle_between(prev, cur) < 10.0 * M_PI / 180.0) {
+        // Nearly parallel neighbours (a step in the wall): joined where the chain joins them.
+        end[p] = prev.c + prev.u * (prev.b - prev.c).dot(prev.u);
+        start[i] = cur.c + cur.u * (cur.a - cur.c).dot(cur.u);
+        step[i] = 1;
+        continue;
+      }
+      if ((*x - cur.a).norm() > 2.0 * chamfer_max) return std::nullopt;
+      end[p] = start[i] = *x;
+    }
+    std::optional<std::size_t> reversed;
+    for (std::size_t i = 0; i < m; ++i)
+      if ((end[i] - start[i]).dot(lines[i].u) < 0 &&
+          (!reversed || lines[i].inliers.size() < lines[*reversed].inliers.size()))
+        reversed = i;
+    if (!reversed) {
+      for (std::size_t i = 0; i < m; ++i) {
+        if (step[i]) out.push_back(end[(i + m - 1) % m]);
+        out.push_back(start[i]);
+      }
+      break;
+    }
+    lines[(*reversed + m - 1) % m].b = lines[*reversed].b;
+    lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(*reversed));
+  }
+  // Drop repeated vertices.
+  Polygon clean;
+  for (const auto& v : out)
+    if (clean.empty() || (v - clean.back()).norm() > 1e-6) clean.push_back(v);
+  while (clean.size() > 1 && (clean.front() - clean.back()).norm() <= 1e-6) clean.pop_back();
+  for (const auto& v : clean)
+    if (!v.allFinite()) return std::nullopt;
+  if (clean.size() < 3 || !is_simple(clean) || !(signed_area(clean) > 0)) return std::nullopt;
+  return clean;
+}
+
 }  // namespace
 
 BorderResult close_border(const Grid<Cell>& layout, const GridGeometry& geo,
@@ -635,9 +958,15 @@ BorderResult close_border(const Grid<Cell>& layout, const GridGeometry& geo,
   res.chain_polygon_m = to_map(poly);
   res.polygon_m = res.chain_polygon_m;
   if (params.face_snap_max_m > 0) {
-    if (auto snapped = snap_to_faces(poly, layout, params.face_snap_max_m / geo.cell_m()))
+    // A door recess spans the door and its two jambs (each up to the largest move).
+    const double max_bump = (params.door_max_m + 2.0 * params.face_snap_max_m) / geo.cell_m() + 4.0;
+    if (auto fitted = fit_to_faces(poly, layout, params.face_snap_max_m / geo.cell_m(), max_bump)) {
+      res.polygon_m = to_map(*fitted);
+    } else if (auto snapped = snap_to_faces(poly, layout, params.face_snap_max_m / geo.cell_m())) {
       res.polygon_m = to_map(*snapped);
-    else
+      res.warnings.push_back(
+          "the polygon could not be fitted to the wall faces; its edges were moved to them");
+    } else
       res.warnings.push_back(
           "the polygon could not be moved to the wall faces; it follows the chain");
   }

@@ -8,7 +8,8 @@
 // (3) 8-connected components of the border with their bounding boxes, classified by counting the
 // "switches" along their horizontal mid-line; (4) for every ring: opening lines -2 / -3, the Lee
 // wave around the ring, the backward pass preferring cells that touch room space; (5) the ring
-// whose polygon contains the scanner is the room border; (6) openings, polygon, area, perimeter.
+// whose polygon contains the scanner is the room border; (6) openings, and the polygon fitted to
+// the wall faces beside the chain, with its area and perimeter.
 #include <Eigen/Core>
 #include <cstdint>
 #include <optional>
@@ -31,8 +32,8 @@ struct BorderParams {
   int erode_full_size = 5;    ///< [cells] side of the full square erosion element (odd, >= 3)
   int erode_iterations = 2;   ///< erosions with that element (>= 1)
   double simplify_tolerance_m = 0.05;  ///< [m] Douglas-Peucker tolerance of polygon_m (0 = raw)
-  /// [m] the chain runs at the back of the wall; each polygon edge is moved inwards to the wall
-  /// face (the first room-space cell, median along the edge) by at most this much (0 = off).
+  /// [m] the chain runs at the back of the wall; the polygon is fitted to the wall faces found up
+  /// to this far inside the chain polygon (0 = off: polygon_m is the chain polygon).
   double face_snap_max_m = 0.3;
   /// [m] a chain cell is closed when a wall or furniture cell lies within this distance of it;
   /// chain cells with none are open (the chain runs at the back of the wall, sometimes a cell off).
@@ -97,8 +98,10 @@ struct BorderResult {
   /// each cell is an 8-neighbour of the next, and the last of the first.
   std::vector<CellIndex> chain;
   std::vector<Eigen::Vector2d> chain_m;  ///< cell centres of chain (map metres)
-  Polygon polygon_m;  ///< simplified chain polygon moved to the wall faces; simple, ccw (map m)
-  Polygon chain_polygon_m;   ///< the simplified chain polygon before the move to the faces
+  /// The room polygon on the wall faces: one line fitted per face, corners where consecutive
+  /// faces meet, doors bridged along their wall; simple, counter-clockwise (map m).
+  Polygon polygon_m;
+  Polygon chain_polygon_m;   ///< the simplified chain polygon (at the back of the wall band)
   double area_m2 = 0.0;      ///< of polygon_m
   double perimeter_m = 0.0;  ///< of polygon_m
   std::vector<Opening> openings;
