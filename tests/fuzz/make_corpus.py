@@ -211,6 +211,37 @@ put("config", "deep_nesting.yaml", "[" * 300 + "]" * 300 + "\n")
 put("config", "anchors.yaml", "voxel: &v\n  cell_m: 0.1\nlayout: *v\n")
 put("config", "optional_null.yaml", "layers:\n  floor_z_m: ~\n  ceiling_z_m: 2.5\n")
 
+# ---------------------------------------------------------------- plain image map (plan-route)
+# Byte 0: bits 0-1 the file name (map.pgm, map.png, map.PNG, map), bits 2-4 the resolution
+# (0.05, 0.1, 1, 1e-9, 1e9, 0, -1, NaN); byte 1: --free-min. Then the image.
+def plain(name_idx, res_idx, free_min, image):
+    return bytes([name_idx | (res_idx << 2), free_min]) + image
+
+
+png_rows = b"".join(b"\x00" + bytes([0, 205, 254, 100]) for _ in range(3))
+put("plain_map", "pgm.bin", plain(0, 0, 250, pgm(8, 6)))
+put("plain_map", "png.bin", plain(1, 0, 250, png(4, 3, png_rows)))
+put("plain_map", "png_named_pgm.bin", plain(0, 1, 128, png(4, 3, png_rows)))
+put("plain_map", "pgm_no_extension_free_min_0.bin", plain(3, 2, 0, pgm(3, 3)))
+put("plain_map", "p2_ascii.bin", plain(2, 0, 255, b"P2\n3 2\n255\n0 205 254\n254 0 205\n"))
+put("plain_map", "pgm_crlf_header.bin", plain(0, 0, 250, b"P5\r\n# c\r\n2 2\r\n255\r\n\x00\xfe\xcd\x00"))
+put("plain_map", "pgm_16bit.bin", plain(0, 0, 250, pgm(2, 2, b"\x00\x01\xff\xff\x80\x00\x00\x00", 65535)))
+put("plain_map", "pgm_maxval_0.bin", plain(0, 0, 250, pgm(2, 2, b"\x00\x01\x02\x03", 0)))
+put("plain_map", "pgm_maxval_65536.bin", plain(0, 0, 250, pgm(2, 2, b"\x00" * 8, 65536)))
+put("plain_map", "pgm_truncated.bin", plain(0, 0, 250, pgm(8, 6)[:-10]))
+put("plain_map", "pgm_huge_short.bin", plain(0, 0, 250, b"P5\n100000 100000\n255\n\x00\x00"))
+put("plain_map", "pgm_negative_size.bin", plain(0, 0, 250, b"P5\n-2 2\n255\n\x00\x00\x00\x00"))
+put("plain_map", "png_16bit_rgb.bin", plain(1, 0, 200, png(2, 2, b"\x00" + b"\x12\x34" * 6 + b"\x00" + b"\xff\xff" * 6, 16, 2)))
+put("plain_map", "png_huge_ihdr.bin", plain(1, 0, 250, png(65536, 65536, b"\x00\x00")))
+put("plain_map", "png_width_zero.bin", plain(1, 0, 250, png(0, 5, b"\x00")))
+put("plain_map", "png_corrupt_idat.bin", plain(1, 0, 250, png(4, 3, png_rows)[:45] + b"garbage"))
+put("plain_map", "resolution_tiny_huge.bin", plain(0, 3, 250, pgm(2, 2)))
+put("plain_map", "resolution_1e9.bin", plain(1, 4, 250, png(4, 3, png_rows)))
+put("plain_map", "resolution_zero.bin", plain(0, 5, 250, pgm(2, 2)))
+put("plain_map", "resolution_nan.bin", plain(0, 7, 250, pgm(2, 2)))
+put("plain_map", "gif.bin", plain(0, 0, 250, b"GIF89a\x02\x00\x02\x00\x00\x00\x00;"))
+put("plain_map", "empty.bin", b"")
+
 # ---------------------------------------------------------------- planner config (plan-route -c)
 with open(os.path.join(HERE, "..", "..", "config", "plan-route.yaml"), "rb") as f:
     plan_yaml = f.read()
