@@ -421,3 +421,82 @@ INSTANTIATE_TEST_SUITE_P(
         MapCase{"png_zero_size", kYaml, png_header(0, 5), "map image has no pixels"},
         MapCase{"png_corrupt", kYaml, png_header(4, 4), "cannot decode the map image"}),
     [](const auto& info) { return info.param.name; });
+
+// ------------------------------------------------------------------------------ plan-route,
+// map-eval Rows found writing the plain_map, plan_config and layout_pgm fuzz targets: each app run
+// on the bad file exits 2 with `<app>: <file>[:line]: problem` and leaves {d}/out empty.
+
+struct OtherAppCase {
+  std::string name;
+  std::string app;
+  /// Files to create (path relative to the scratch dir; a path ending in '/' is a directory).
+  std::vector<std::pair<std::string, std::string>> files;
+  std::string args;    ///< {d} is the scratch dir; outputs go to {d}/out
+  std::string expect;  ///< substring of stderr after "<app>: " ({d} replaced too)
+};
+
+void PrintTo(const OtherAppCase& c, std::ostream* os) {
+  *os << c.name;
+}
+
+class AppRefuses : public ::testing::TestWithParam<OtherAppCase> {};
+
+TEST_P(AppRefuses, WithMessageExitCode2AndNoOutput) {
+  const auto& c = GetParam();
+  const auto dir = test::scratch_dir();
+  for (const auto& [name, content] : c.files) {
+    if (name.ends_with('/')) {
+      fs::create_directories(dir / name);
+    } else {
+      fs::create_directories((dir / name).parent_path());
+      test::write_text(dir / name, content);
+    }
+  }
+  const auto r = test::run_app(c.app, replace_all(c.args, "{d}", dir.string()));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err.rfind(c.app + ": ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(replace_all(c.expect, "{d}", dir.string())), std::string::npos) << r.err;
+  EXPECT_TRUE(!fs::exists(dir / "out") || fs::is_empty(dir / "out")) << "partial output";
+}
+
+namespace {
+const std::string kPlan = " --resolution 0.05 --start 0.1,0.1 --goal 0.2,0.1 -o {d}/out";
+const std::string kTruth =
+    R"({"format": "indoormap-ground-truth", "rooms": [], "furniture": [], "layout": )"
+    R"({"image": "truth.pgm", "resolution": 0.05, "origin": [0, 0], "width": 2, "height": 2}})";
+const std::string kEval = "--truth {d}/truth.json --result {d}/result -o {d}/out";
+}  // namespace
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, AppRefuses,
+    ::testing::Values(
+        OtherAppCase{"plan_route_plain_png_dims_overflow",
+                     "plan-route",
+                     {{"m.png", png_header(0xffffffffu, 0xffffffffu)}},
+                     "--map {d}/m.png" + kPlan,
+                     "{d}/m.png: map of 4294967295 x 4294967295 cells is above the budget of "
+                     "100000000 cells"},
+        OtherAppCase{"plan_route_plain_map_is_a_directory",
+                     "plan-route",
+                     {{"m.png/", ""}},
+                     "--map {d}/m.png" + kPlan,
+                     "{d}/m.png: map image is not a regular file"},
+        OtherAppCase{"plan_route_config_integer_nan",
+                     "plan-route",
+                     {{"c.yaml", "planner:\n  max_routes: .nan\n"}, {"m.pgm", kPgm}},
+                     "-c {d}/c.yaml --map {d}/m.pgm" + kPlan,
+                     "{d}/c.yaml:2: key 'planner.max_routes': expected an integer in range"},
+        OtherAppCase{"map_eval_layout_pgm_huge_short",
+                     "map-eval",
+                     {{"truth.json", kTruth},
+                      {"truth.pgm", kPgm},
+                      {"result/layout.pgm", "P5\n100000 4000\n255\n" + std::string(2, '\0')}},
+                     kEval,
+                     "{d}/result/layout.pgm: PGM data truncated: 100000 x 4000 pixels need "
+                     "400000000 bytes, the file holds 2"},
+        OtherAppCase{"map_eval_layout_pgm_is_a_directory",
+                     "map-eval",
+                     {{"truth.json", kTruth}, {"truth.pgm", kPgm}, {"result/layout.pgm/", ""}},
+                     kEval,
+                     "{d}/result/layout.pgm: not a regular file"}),
+    [](const auto& info) { return info.param.name; });

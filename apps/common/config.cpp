@@ -143,13 +143,9 @@ struct Reader {
       } else if constexpr (std::is_same_v<T, bool>) {
         v = n.as<bool>();
       } else if constexpr (std::is_integral_v<T>) {
-        // Range first (NaN fails it), so the cast below is defined.
-        const auto d = n.as<long double>();
-        if (!(d >= static_cast<long double>(std::numeric_limits<T>::min()) &&
-              d <= static_cast<long double>(std::numeric_limits<T>::max())) ||
-            d != std::floor(d))
-          fail(full, n, "expected an integer in range");
-        v = static_cast<T>(d);
+        const auto k = config_integer<T>(n);
+        if (!k) fail(full, n, "expected an integer in range");
+        v = *k;
       } else {
         v = n.as<T>();
       }

@@ -33,12 +33,9 @@ void merge_plan_config_file(PlanConfig& config, const std::string& path) {
       if constexpr (std::is_same_v<T, bool>) {
         v = n.as<bool>();
       } else if constexpr (std::is_integral_v<T>) {
-        const auto d = n.as<long double>();
-        if (d < static_cast<long double>(std::numeric_limits<T>::min()) ||
-            d > static_cast<long double>(std::numeric_limits<T>::max()) ||
-            d != static_cast<long double>(static_cast<long long>(d)))
-          fail("expected an integer in range");
-        v = static_cast<T>(d);
+        const auto k = config_integer<T>(n);  // NaN used to reach a double-to-integer cast (UB)
+        if (!k) fail("expected an integer in range");
+        v = *k;
       } else {
         v = n.as<T>();
       }

@@ -219,12 +219,25 @@ RosMap read_plain_map(const fs::path& image, double resolution_m, int free_min,
   if (!(resolution_m > 0) || !std::isfinite(resolution_m))
     throw UsageError("map resolution must be a positive number of metres per pixel");
   if (free_min < 0 || free_min > 255) throw UsageError("free_min must be in [0, 255]");
+  // A directory would reach the decoder as an unreadable file, a FIFO would block in open().
+  std::error_code ec;
+  if (!fs::exists(image, ec)) throw InputError(image.string(), "map image not found");
+  if (!fs::is_regular_file(image, ec))
+    throw InputError(image.string(), "map image is not a regular file");
   const auto [w, h] = image_size(image);
-  if (w * h > max_cells)
+  // PNG sizes are 32-bit: check each before any product (w * h can overflow int64).
+  if (w <= 0 || h <= 0) throw InputError(image.string(), "map image has no pixels");
+  if (w > std::numeric_limits<int>::max() || h > std::numeric_limits<int>::max() ||
+      w > max_cells / h)
     throw BudgetError(image.string() + ": map of " + std::to_string(w) + " x " + std::to_string(h) +
                       " cells is above the budget of " + std::to_string(max_cells) + " cells");
-  cv::Mat img = cv::imread(image.string(), cv::IMREAD_GRAYSCALE);
-  if (img.empty() || img.cols != w || img.rows != h)
+  cv::Mat img;
+  try {
+    img = cv::imread(image.string(), cv::IMREAD_GRAYSCALE);
+  } catch (const cv::Exception& e) {
+    throw InputError(image.string(), "cannot decode the map image: " + e.msg);
+  }
+  if (img.empty() || img.cols != w || img.rows != h || img.type() != CV_8UC1)
     throw InputError(image.string(), "cannot decode the map image");
   RosMap m;
   m.meta.image = image.filename().string();
@@ -233,7 +246,8 @@ RosMap read_plain_map(const fs::path& image, double resolution_m, int free_min,
   m.cells = Grid<Cell>(static_cast<int>(w), static_cast<int>(h), Cell::kWall);
   for (int r = 0; r < h; ++r)
     for (int c = 0; c < w; ++c)
-      if (img.at<std::uint8_t>(static_cast<int>(h - 1 - r), c) >= free_min) m.cells.at(c, r) = Cell::kFree;
+      if (img.at<std::uint8_t>(static_cast<int>(h - 1 - r), c) >= free_min)
+        m.cells.at(c, r) = Cell::kFree;
   return m;
 }
 

@@ -1,5 +1,7 @@
 #include "indoormap/sim/output.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -283,11 +285,21 @@ WrittenOutputs write_scene_outputs(const fs::path& dir, const Scene& input, cons
 }
 
 Grid<std::uint8_t> read_pgm(const fs::path& path, bool flip) {
+  // A directory would read as an empty file, a FIFO would block in open().
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(path.string(), "cannot open: no such file");
+  if (!fs::is_regular_file(path, ec)) throw InputError(path.string(), "not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string(), "cannot open");
-  std::string magic;
-  in >> magic;
-  if (magic != "P5") throw InputError(path.string(), "not a binary PGM (P5) file");
+  // The magic number is two bytes followed by whitespace or a comment (not read as a
+  // whitespace-delimited token: that could be as long as the file).
+  char magic[2] = {};
+  in.read(magic, 2);
+  const auto got = in.gcount();  // before peek(), which resets it
+  const int after = in.peek();
+  if (got < 2 || magic[0] != 'P' || magic[1] != '5' ||
+      !(after == '#' || (after != EOF && std::isspace(after))))
+    throw InputError(path.string(), "not a binary PGM (P5) file");
   long long vals[3];
   for (auto& v : vals) {
     in >> std::ws;
@@ -300,15 +312,26 @@ Grid<std::uint8_t> read_pgm(const fs::path& path, bool flip) {
   }
   const long long w = vals[0], h = vals[1], maxval = vals[2];
   if (w <= 0 || h <= 0 || w > 100000 || h > 100000 || w * h > 400'000'000LL)
-    throw InputError(path.string(), "PGM size " + std::to_string(w) + " x " + std::to_string(h) + " out of range");
+    throw InputError(path.string(),
+                     "PGM size " + std::to_string(w) + " x " + std::to_string(h) + " out of range");
   if (maxval <= 0 || maxval > 255) throw InputError(path.string(), "only 8-bit PGM is supported");
   in.get();  // the single whitespace after maxval
+  // The pixels must be in the file before the grid is allocated for them.
+  const auto data_start = static_cast<long long>(in.tellg());
+  const auto file_size = static_cast<long long>(fs::file_size(path, ec));
+  const long long present = !in || ec || data_start < 0 ? 0 : std::max(0LL, file_size - data_start);
+  if (present < w * h)
+    throw InputError(path.string(), "PGM data truncated: " + std::to_string(w) + " x " +
+                                        std::to_string(h) + " pixels need " +
+                                        std::to_string(w * h) + " bytes, the file holds " +
+                                        std::to_string(present));
   Grid<std::uint8_t> g(static_cast<int>(w), static_cast<int>(h));
   std::vector<char> row(static_cast<std::size_t>(w));
   for (long long r = 0; r < h; ++r) {
     if (!in.read(row.data(), w)) throw InputError(path.string(), "PGM data truncated");
     const int gr = flip ? static_cast<int>(h - 1 - r) : static_cast<int>(r);
-    for (long long c = 0; c < w; ++c) g.at(static_cast<int>(c), gr) = static_cast<std::uint8_t>(row[c]);
+    for (long long c = 0; c < w; ++c)
+      g.at(static_cast<int>(c), gr) = static_cast<std::uint8_t>(row[c]);
   }
   return g;
 }
