@@ -3,8 +3,8 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
-#include <limits>
 #include <fstream>
+#include <limits>
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 
@@ -16,7 +16,8 @@ namespace indoormap::io {
 namespace fs = std::filesystem;
 
 void write_pgm(const fs::path& path, const Grid<std::uint8_t>& grid) {
-  std::string bytes = "P5\n" + std::to_string(grid.width) + " " + std::to_string(grid.height) + "\n255\n";
+  std::string bytes =
+      "P5\n" + std::to_string(grid.width) + " " + std::to_string(grid.height) + "\n255\n";
   const std::size_t header = bytes.size();
   bytes.resize(header + grid.size());
   for (int r = 0; r < grid.height; ++r) {
@@ -29,7 +30,8 @@ void write_pgm(const fs::path& path, const Grid<std::uint8_t>& grid) {
 
 void write_layout_pgm(const fs::path& path, const Grid<Cell>& layout) {
   Grid<std::uint8_t> raw(layout.width, layout.height);
-  for (std::size_t i = 0; i < raw.size(); ++i) raw.data[i] = static_cast<std::uint8_t>(layout.data[i]);
+  for (std::size_t i = 0; i < raw.size(); ++i)
+    raw.data[i] = static_cast<std::uint8_t>(layout.data[i]);
   write_pgm(path, raw);
 }
 
@@ -39,9 +41,15 @@ void write_ros_map(const fs::path& dir, const std::string& stem, const Grid<Cell
   for (std::size_t i = 0; i < img.size(); ++i) {
     switch (layout.data[i]) {
       case Cell::kWall:
-      case Cell::kFurniture: img.data[i] = kRosOccupied; break;
-      case Cell::kFree: img.data[i] = kRosFree; break;
-      case Cell::kUnknown: img.data[i] = kRosUnknown; break;
+      case Cell::kFurniture:
+        img.data[i] = kRosOccupied;
+        break;
+      case Cell::kFree:
+        img.data[i] = kRosFree;
+        break;
+      case Cell::kUnknown:
+        img.data[i] = kRosUnknown;
+        break;
     }
   }
   const RosMapMeta meta;
@@ -72,8 +80,8 @@ std::pair<std::int64_t, std::int64_t> image_size(const fs::path& path) {
   char head[32] = {};
   in.read(head, sizeof head);
   const auto got = in.gcount();
-  if (got >= 24 && static_cast<unsigned char>(head[0]) == 0x89 && head[1] == 'P' && head[2] == 'N' &&
-      head[3] == 'G') {
+  if (got >= 24 && static_cast<unsigned char>(head[0]) == 0x89 && head[1] == 'P' &&
+      head[2] == 'N' && head[3] == 'G') {
     auto be32 = [&](int o) {
       return (std::int64_t{static_cast<unsigned char>(head[o])} << 24) |
              (std::int64_t{static_cast<unsigned char>(head[o + 1])} << 16) |
@@ -137,6 +145,26 @@ double number_at(const YAML::Node& root, const char* key, const fs::path& file,
   }
 }
 
+// The map image decoded as 8-bit grey, its size checked against max_cells from the header before
+// decoding. PNG sizes are 32-bit: each is checked before any product (w * h can overflow int64).
+cv::Mat decode_gray(const fs::path& image, std::int64_t max_cells) {
+  const auto [w, h] = image_size(image);
+  if (w <= 0 || h <= 0) throw InputError(image.string(), "map image has no pixels");
+  if (w > std::numeric_limits<int>::max() || h > std::numeric_limits<int>::max() ||
+      w > max_cells / h)
+    throw BudgetError(image.string() + ": map of " + std::to_string(w) + " x " + std::to_string(h) +
+                      " cells is above the budget of " + std::to_string(max_cells) + " cells");
+  cv::Mat img;
+  try {
+    img = cv::imread(image.string(), cv::IMREAD_GRAYSCALE);
+  } catch (const cv::Exception& e) {
+    throw InputError(image.string(), "cannot decode the map image: " + e.msg);
+  }
+  if (img.empty() || img.cols != w || img.rows != h || img.type() != CV_8UC1)
+    throw InputError(image.string(), "cannot decode the map image");
+  return img;
+}
+
 }  // namespace
 
 RosMap read_ros_map(const fs::path& yaml_path, std::int64_t max_cells) {
@@ -167,7 +195,8 @@ RosMap read_ros_map(const fs::path& yaml_path, std::int64_t max_cells) {
       throw InputError(yaml_path.string(), "key 'origin' must hold three numbers");
     }
   }
-  if (!m.meta.origin.allFinite()) throw InputError(yaml_path.string(), "key 'origin' is not finite");
+  if (!m.meta.origin.allFinite())
+    throw InputError(yaml_path.string(), "key 'origin' is not finite");
   const double negate = number_at(root, "negate", yaml_path, 0.0);
   if (negate != 0.0 && negate != 1.0)
     throw InputError(yaml_path.string(), "key 'negate' must be 0 or 1");
@@ -183,22 +212,10 @@ RosMap read_ros_map(const fs::path& yaml_path, std::int64_t max_cells) {
   if (image.is_relative()) image = yaml_path.parent_path() / image;
   std::error_code ec;
   if (!fs::is_regular_file(image, ec))
-    throw InputError(image.string(), "map image not found (named by 'image' in " +
-                                         yaml_path.string() + ")");
-  const auto [w, h] = image_size(image);
-  if (w <= 0 || h <= 0) throw InputError(image.string(), "map image has no pixels");
-  if (w > std::numeric_limits<int>::max() || h > std::numeric_limits<int>::max() ||
-      w > max_cells / h)
-    throw BudgetError(image.string() + ": map of " + std::to_string(w) + " x " + std::to_string(h) +
-                      " cells is above the budget of " + std::to_string(max_cells) + " cells");
-  cv::Mat img;
-  try {
-    img = cv::imread(image.string(), cv::IMREAD_GRAYSCALE);
-  } catch (const cv::Exception& e) {
-    throw InputError(image.string(), "cannot decode the map image: " + e.msg);
-  }
-  if (img.empty() || img.cols != w || img.rows != h || img.type() != CV_8UC1)
-    throw InputError(image.string(), "cannot decode the map image");
+    throw InputError(image.string(),
+                     "map image not found (named by 'image' in " + yaml_path.string() + ")");
+  const cv::Mat img = decode_gray(image, max_cells);
+  const int w = img.cols, h = img.rows;
 
   m.geometry = GridGeometry({m.meta.origin.x(), m.meta.origin.y()}, m.meta.resolution_m,
                             static_cast<int>(w), static_cast<int>(h));
@@ -224,21 +241,8 @@ RosMap read_plain_map(const fs::path& image, double resolution_m, int free_min,
   if (!fs::exists(image, ec)) throw InputError(image.string(), "map image not found");
   if (!fs::is_regular_file(image, ec))
     throw InputError(image.string(), "map image is not a regular file");
-  const auto [w, h] = image_size(image);
-  // PNG sizes are 32-bit: check each before any product (w * h can overflow int64).
-  if (w <= 0 || h <= 0) throw InputError(image.string(), "map image has no pixels");
-  if (w > std::numeric_limits<int>::max() || h > std::numeric_limits<int>::max() ||
-      w > max_cells / h)
-    throw BudgetError(image.string() + ": map of " + std::to_string(w) + " x " + std::to_string(h) +
-                      " cells is above the budget of " + std::to_string(max_cells) + " cells");
-  cv::Mat img;
-  try {
-    img = cv::imread(image.string(), cv::IMREAD_GRAYSCALE);
-  } catch (const cv::Exception& e) {
-    throw InputError(image.string(), "cannot decode the map image: " + e.msg);
-  }
-  if (img.empty() || img.cols != w || img.rows != h || img.type() != CV_8UC1)
-    throw InputError(image.string(), "cannot decode the map image");
+  const cv::Mat img = decode_gray(image, max_cells);
+  const int w = img.cols, h = img.rows;
   RosMap m;
   m.meta.image = image.filename().string();
   m.meta.resolution_m = resolution_m;
