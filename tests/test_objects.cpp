@@ -307,7 +307,8 @@ SceneScore score_scene(std::uint64_t seed, double min_area_m2) {
   const sim::SimResult s = sim::simulate(scene);
   PointCloud cloud{s.points, s.scanner_positions_m};
   const layout::MapResult m = layout::make_map(std::move(cloud), {});
-  const auto objs = objects::extract_objects(m.layout.layout, m.geometry, m.voxels, m.layers, {});
+  const auto objs = objects::extract_objects(m.layout.layout, m.geometry, m.voxels, m.layers, {},
+                                               m.cloud_map.scanners);
   // Recall: truth items of at least min_area_m2 against every result object. Precision: result
   // objects of at least min_area_m2 against every truth item on the floor (a result matching a
   // small truth item is right, not spurious).

@@ -136,7 +136,8 @@ TEST(JacobsPipeline, FurnitureStandsAlongTheWalls) {
 TEST(JacobsPipeline, DesksAndCabinetsAlongTheWallsHavePlausibleSizesAndHeights) {
   REQUIRE_JACOBS();
   const auto& m = J->map;
-  const auto objs = objects::extract_objects(m.layout.layout, m.geometry, m.voxels, m.layers, {});
+  const auto objs = objects::extract_objects(m.layout.layout, m.geometry, m.voxels, m.layers, {},
+                                             m.cloud_map.scanners);
   ASSERT_FALSE(objs.objects.empty());
   int along_walls = 0;
   for (const auto& o : objs.objects) {

@@ -52,6 +52,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("layers", "floor_clearance_m", ly.floor_clearance_m);
   f("layers", "ceiling_clearance_m", ly.ceiling_clearance_m);
   f("layers", "wall_band_m", ly.wall_band_m);
+  f("layers", "wall_min_extent_m", ly.wall_min_extent_m);
   f("layers", "furniture_max_height_m", ly.furniture_max_height_m);
   f("layers", "floor_z_m", ly.floor_z_m);
   f("layers", "ceiling_z_m", ly.ceiling_z_m);
@@ -237,6 +238,8 @@ void validate(const PipelineConfig& c) {
   require(ly.ceiling_min_fraction > 0 && ly.ceiling_min_fraction <= 1,
           "layers.ceiling_min_fraction: must be in (0, 1]");
   require(ly.wall_band_m > 0, "layers.wall_band_m: must be > 0");
+  require(ly.wall_min_extent_m >= 0 && ly.wall_min_extent_m <= ly.wall_band_m,
+          "layers.wall_min_extent_m: must be in [0, layers.wall_band_m]");
   require(ly.furniture_max_height_m > 0, "layers.furniture_max_height_m: must be > 0");
   require(ly.ceiling_onset_factor > 1, "layers.ceiling_onset_factor: must be > 1");
   require(ly.min_room_height_m >= 0, "layers.min_room_height_m: must be >= 0");
@@ -270,6 +273,7 @@ void validate(const PipelineConfig& c) {
 std::string to_yaml(const PipelineConfig& config) {
   PipelineConfig c = config;
   YAML::Emitter out;
+  out.SetDoublePrecision(15);  // 0.2, not 0.20000000000000001; still reads back as the same value
   out << YAML::BeginMap;
   std::string open;
   visit(c, [&](const char* s, const char* k, auto& v) {

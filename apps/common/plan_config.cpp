@@ -51,6 +51,7 @@ void validate(const PlanConfig& c) {
 
 std::string to_yaml(const PlanConfig& config) {
   YAML::Emitter out;
+  out.SetDoublePrecision(15);  // 0.2, not 0.20000000000000001; still reads back as the same value
   out << YAML::BeginMap;
   std::string open;
   visit_plan(config, [&](const char* s, const char* k, const auto& v) {

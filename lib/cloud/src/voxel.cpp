@@ -286,16 +286,30 @@ LayerAnalysis analyse_layers(const VoxelGrid& g, const LayerParams& p) {
 }
 
 Grid<std::uint8_t> project_band(const VoxelGrid& g, const HeightBand& band, int min_points,
-                                int isolated_min_points) {
+                                int isolated_min_points, int min_extent_layers) {
   const int w = static_cast<int>(g.nx), h = static_cast<int>(g.ny);
   Grid<std::uint32_t> sum(w, h, 0);
   const auto min_pts = static_cast<std::uint16_t>(std::clamp(min_points, 1, 65535));
   const std::int64_t nxy = g.nx * g.ny;
-  for (std::int64_t z = std::max<std::int64_t>(band.lo_layer, 0);
-       z <= std::min(band.hi_layer, g.nz - 1); ++z) {
+  const std::int64_t z_lo = std::max<std::int64_t>(band.lo_layer, 0),
+                     z_hi = std::min(band.hi_layer, g.nz - 1);
+  // Lowest occupied layer per column (relative to z_lo), for the vertical extent.
+  Grid<std::int32_t> first(w, h, -1);
+  for (std::int64_t z = z_lo; z <= z_hi; ++z) {
     const std::uint16_t* layer = g.counts.data() + z * nxy;
     for (std::int64_t i = 0; i < nxy; ++i)
-      if (layer[i] >= min_pts) sum.data[i] += layer[i];
+      if (layer[i] >= min_pts) {
+        if (min_extent_layers > 1) {
+          auto& f = first.data[static_cast<std::size_t>(i)];
+          if (f < 0) f = static_cast<std::int32_t>(z - z_lo);
+          // A column reaches the extent once a layer min_extent_layers - 1 above its first one
+          // holds points; until then its sum stays zero.
+          if (z - z_lo - f + 1 < min_extent_layers) {
+            continue;
+          }
+        }
+        sum.data[i] += layer[i];
+      }
   }
   Grid<std::uint8_t> out(w, h, 0);
   const auto isolated_min = static_cast<std::uint32_t>(std::max(isolated_min_points, 1));

@@ -40,8 +40,9 @@ MapResult make_map(PointCloud cloud, const MapParams& params) {
 
   r.geometry = r.voxels.geometry2d();
   const auto& lp = params.layers;
-  r.walls = cloud::project_band(r.voxels, r.layers.wall_band, lp.min_points_per_voxel,
-                                lp.isolated_min_points);
+  r.walls = cloud::project_band(
+      r.voxels, r.layers.wall_band, lp.min_points_per_voxel, lp.isolated_min_points,
+      std::max(1, static_cast<int>(std::lround(lp.wall_min_extent_m / r.voxels.cell_m))));
   r.furniture = cloud::project_band(r.voxels, r.layers.furniture_band, lp.min_points_per_voxel,
                                     lp.isolated_min_points);
   // The slice just below the wall band tells hanging objects (lamps) from walls and pillars.
@@ -51,7 +52,13 @@ MapResult make_map(PointCloud cloud, const MapParams& params) {
   below.lo_layer = std::max<std::int64_t>(
       r.layers.furniture_band.lo_layer,
       below.hi_layer - static_cast<std::int64_t>(std::ceil(params.layout.hanging_gap_m / r.voxels.cell_m)) + 1);
-  const auto support = cloud::project_band(r.voxels, below, lp.min_points_per_voxel, lp.isolated_min_points);
+  auto support = cloud::project_band(r.voxels, below, lp.min_points_per_voxel, lp.isolated_min_points);
+  // So does a column standing through most of the wall band: the wall above a window, where
+  // nothing is below it, is a wall, not a lamp.
+  const auto tall = cloud::project_band(
+      r.voxels, wb, lp.min_points_per_voxel, lp.isolated_min_points,
+      static_cast<int>(std::lround(0.6 * static_cast<double>(wb.hi_layer - wb.lo_layer + 1))));
+  for (std::size_t i = 0; i < support.size(); ++i) support.data[i] |= tall.data[i];
   r.timings.push_back({"project", sw.lap_ms()});
 
   std::vector<Eigen::Vector2d> seeds;

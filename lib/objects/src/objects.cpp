@@ -17,6 +17,9 @@ constexpr float kNoHeight = std::numeric_limits<float>::quiet_NaN();
 // Cells this close to a wall cell whose column reaches the wall band hold the wall's face (the
 // wall class comes from the wall band and may sit a cell or two off the lower face).
 constexpr int kWallFaceCells = 3;
+// A top surface this close below the scanner is seen at so grazing an angle that its samples
+// leave gaps: no data there is no evidence of an empty cell.
+constexpr double kMinDropBelowScanner_m = 0.1;
 
 struct Column {
   std::int64_t bottom = -1, top = -1;  // layers; -1: nothing above the floor
@@ -38,6 +41,35 @@ Column column_extent(const cloud::VoxelGrid& g, int col, int row, std::int64_t f
     c.top = z;
   }
   return c;
+}
+
+bool floor_seen(const cloud::VoxelGrid& g, int col, int row, std::int64_t floor_layer) {
+  for (std::int64_t z = std::max<std::int64_t>(0, floor_layer - 1);
+       z <= std::min(floor_layer + 1, g.nz - 1); ++z)
+    if (g.count(col, row, z)) return true;
+  return false;
+}
+
+// True when the straight line from the scanner to `target` (map frame) crosses no occupied voxel,
+// leaving out the last `skip_end_m` (horizontally) before the target: the target's own column and
+// its neighbours hold the surface the line ends on.
+bool line_of_sight(const cloud::VoxelGrid& g, const Eigen::Vector3d& scanner,
+                   const Eigen::Vector3d& target, double skip_end_m) {
+  const Eigen::Vector3d d = target - scanner;
+  const double horiz = d.head<2>().norm();
+  if (horiz <= skip_end_m) return true;
+  const double step = 0.5 * g.cell_m;
+  const auto n = static_cast<std::int64_t>(std::ceil((horiz - skip_end_m) / (step)));
+  for (std::int64_t i = 0; i <= n; ++i) {
+    const double t = std::min(1.0, i * step / horiz);
+    const Eigen::Vector3d p = scanner + t * d;
+    const auto x = static_cast<std::int64_t>(std::floor((p.x() - g.origin_m.x()) / g.cell_m));
+    const auto y = static_cast<std::int64_t>(std::floor((p.y() - g.origin_m.y()) / g.cell_m));
+    const auto z = static_cast<std::int64_t>(std::floor((p.z() - g.origin_m.z()) / g.cell_m));
+    if (x < 0 || y < 0 || z < 0 || x >= g.nx || y >= g.ny || z >= g.nz) continue;
+    if (g.count(static_cast<int>(x), static_cast<int>(y), z)) return false;
+  }
+  return true;
 }
 
 OrientedBox min_area_box(const std::vector<Eigen::Vector2d>& pts) {
@@ -166,7 +198,8 @@ Labels merge_small_pieces(const Labels& in, const Grid<std::uint8_t>& mask, Conn
 
 ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
                               const cloud::VoxelGrid& voxels, const cloud::LayerAnalysis& layers,
-                              const ObjectParams& params) {
+                              const ObjectParams& params,
+                              const std::vector<Eigen::Vector3d>& scanners_map) {
   const std::int64_t floor_layer = layers.floor_layer, ceiling_layer = layers.ceiling_layer;
   const int w = layout.width, h = layout.height;
   if (w != geo.width() || h != geo.height() || voxels.nx != w || voxels.ny != h)
@@ -183,6 +216,7 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
   const auto max_gap =
       static_cast<std::int64_t>(std::ceil(params.max_vertical_gap_m / voxels.cell_m));
   Grid<Column> cols(w, h);
+  Grid<std::uint8_t> pocket(w, h, 0);  // furniture cells without data, floor unseen
   cv::Mat no_data(h, w, CV_8U, cv::Scalar(1));
   bool any_data = false;
   for (int r = 0; r < h; ++r)
@@ -198,6 +232,14 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
               if (layout.contains(c + dc, r + dr) && layout.at(c + dc, r + dr) == Cell::kWall)
                 wall_face = true;
         if (wall_face) cols.at(c, r) = Column{};
+        if (!wall_face && cols.at(c, r).top < 0) {
+          // The floor seen: nothing stands here (an enclosed pocket the scanner saw into).
+          if (floor_seen(voxels, c, r, floor_layer)) {
+            mask.at(c, r) = 0;
+            continue;
+          }
+          pocket.at(c, r) = 1;
+        }
         if (cols.at(c, r).top >= 0) {
           no_data.at<std::uint8_t>(r, c) = 0;
           any_data = true;
@@ -209,6 +251,11 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
     cv::distanceTransform(no_data, dist, nearest, cv::DIST_L2, cv::DIST_MASK_5,
                           cv::DIST_LABEL_PIXEL);
     std::vector<CellIndex> seed_of(1, CellIndex{});  // label -> data cell
+    // Gaps of a few cells between data cells are missed samples (a top seen at a grazing angle),
+    // not evidence of an empty cell.
+    cv::Mat near_data;
+    cv::morphologyEx(no_data == 0, near_data, cv::MORPH_CLOSE,
+                     cv::getStructuringElement(cv::MORPH_RECT, {3, 3}), {-1, -1}, 2);
     for (int r = 0; r < h; ++r)
       for (int c = 0; c < w; ++c)
         if (!no_data.at<std::uint8_t>(r, c)) {
@@ -221,6 +268,22 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
         if (mask.at(c, r)) {
           const CellIndex s = seed_of[nearest.at<int>(r, c)];
           top.at(c, r) = static_cast<float>(voxels.layer_center_m(cols.at(s).top));
+          // A pocket cell (no data, floor unseen) is the hidden part of the object next to it
+          // only if that object's top surface, carried over the cell, would be hidden too. A
+          // scanner that could see it there and saw nothing proves the object ends before it:
+          // the shadow behind a bin, fenced in by other obstacles, is not part of the bin.
+          if (!pocket.at(c, r) || near_data.at<std::uint8_t>(r, c)) continue;
+          const Eigen::Vector3d target(
+              geo.origin_m().x() + (c + 0.5) * geo.cell_m(),
+              geo.origin_m().y() + (r + 0.5) * geo.cell_m(),
+              voxels.layer_bottom_m(cols.at(s).top + 1) + 0.25 * voxels.cell_m);
+          for (const auto& sc : scanners_map)
+            if (target.z() < sc.z() - kMinDropBelowScanner_m &&
+                line_of_sight(voxels, sc, target, 1.5 * geo.cell_m())) {
+              mask.at(c, r) = 0;
+              top.at(c, r) = kNoHeight;
+              break;
+            }
         }
   }
 

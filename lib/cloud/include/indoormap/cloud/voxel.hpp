@@ -66,6 +66,10 @@ struct LayerParams {
   double floor_clearance_m = 0.10;     ///< the furniture band starts this far above the floor
   double ceiling_clearance_m = 0.15;   ///< the wall band ends this far below the ceiling
   double wall_band_m = 0.50;           ///< thickness of the wall band
+  /// A wall cell's band column spans at least this height (lowest to highest occupied voxel): a
+  /// wall stands through the band, while a lamp or the top of a tall cabinet reaching into it is a
+  /// thin horizontal slab. 0: any point in the band makes a wall (the paper).
+  double wall_min_extent_m = 0.2;
   double furniture_max_height_m = 2.0; ///< the furniture band ends here (above the floor) at most
   // Overrides (map-frame heights, metres); unset means "detect".
   std::optional<double> floor_z_m;
@@ -103,6 +107,6 @@ LayerAnalysis analyse_layers(const VoxelGrid& grid, const LayerParams& params);
 /// stray returns (mixed pixels at depth edges, dust) do not become objects, while a thin pole,
 /// seen over its height, still does.
 Grid<std::uint8_t> project_band(const VoxelGrid& grid, const HeightBand& band, int min_points,
-                                int isolated_min_points = 1);
+                                int isolated_min_points = 1, int min_extent_layers = 1);
 
 }  // namespace indoormap::cloud

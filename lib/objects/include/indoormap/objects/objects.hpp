@@ -68,7 +68,8 @@ struct ObjectsResult {
 /// the wall's face, not the object: they take the height of the nearest other cell.
 ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geometry,
                               const cloud::VoxelGrid& voxels, const cloud::LayerAnalysis& layers,
-                              const ObjectParams& params = {});
+                              const ObjectParams& params = {},
+                              const std::vector<Eigen::Vector3d>& scanners_map = {});
 
 /// Indices of the points (map frame, same order as given) inside each object's crop region: the
 /// footprint cells dilated by crop_margin_m, heights within [z_min - margin, z_max + margin].
