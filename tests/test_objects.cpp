@@ -381,10 +381,14 @@ SceneScore score_scene(std::uint64_t seed, double min_area_m2) {
 
 }  // namespace
 
-TEST(ObjectsAccuracy, TwentySimulatedScenes) {
+struct Totals {
+  double recall = 0, precision = 0, median_height_error_m = 1e9;
+};
+
+Totals score_scenes(std::uint64_t first_seed, std::uint64_t last_seed) {
   int truth = 0, result = 0, matched = 0, matched_result = 0;
   std::vector<double> errors;
-  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+  for (std::uint64_t seed = first_seed; seed <= last_seed; ++seed) {
     const SceneScore s = score_scene(seed, 0.1);
     truth += s.truth;
     result += s.result;
@@ -394,20 +398,33 @@ TEST(ObjectsAccuracy, TwentySimulatedScenes) {
     std::printf("scene %2llu: truth %2d result %2d matched %2d\n",
                 static_cast<unsigned long long>(seed), s.truth, s.result, s.matched_truth);
   }
-  ASSERT_GT(truth, 50);
-  const double recall = static_cast<double>(matched) / truth;
-  const double precision = static_cast<double>(matched_result) / result;
+  EXPECT_GT(truth, 50);
+  Totals t;
+  t.recall = truth ? static_cast<double>(matched) / truth : 0.0;
+  t.precision = result ? static_cast<double>(matched_result) / result : 0.0;
   std::sort(errors.begin(), errors.end());
-  const double median = errors.empty() ? 1e9 : errors[errors.size() / 2];
+  if (!errors.empty()) t.median_height_error_m = errors[errors.size() / 2];
   std::printf(
-      "objects >= 0.1 m2 in 20 scenes: truth %d, result %d, matched %d, recall %.3f, precision "
-      "%.3f, "
-      "median |z_max error| %.3f m\n",
-      truth, result, matched, recall, precision, median);
-  // Issue 4 asks for recall and precision >= 0.9; today's figures (docs/evaluation.md) are
-  // recall 0.87, precision 0.86, median height error 0.02 m. The bounds below guard them against
-  // regressions; they are not the target.
-  EXPECT_GE(recall, 0.85);
-  EXPECT_GE(precision, 0.84);
-  EXPECT_LE(median, 0.05);
+      "objects >= 0.1 m2 in scenes %llu-%llu: truth %d, result %d, matched %d, recall %.3f, "
+      "precision %.3f, median |z_max error| %.3f m\n",
+      static_cast<unsigned long long>(first_seed), static_cast<unsigned long long>(last_seed),
+      truth, result, matched, t.recall, t.precision, t.median_height_error_m);
+  return t;
+}
+
+// Issue 4's acceptance: recall and precision >= 0.9, median height error <= 5 cm on 20 scenes.
+TEST(ObjectsAccuracy, TwentySimulatedScenes) {
+  const Totals t = score_scenes(1, 20);
+  EXPECT_GE(t.recall, 0.9);
+  EXPECT_GE(t.precision, 0.9);
+  EXPECT_LE(t.median_height_error_m, 0.05);
+}
+
+// The parameters were chosen looking at scenes 1-20; scenes 21-40 were not looked at while doing
+// so and show what to expect on new scenes (docs/evaluation.md).
+TEST(ObjectsAccuracy, TwentyHeldOutScenes) {
+  const Totals t = score_scenes(21, 40);
+  EXPECT_GE(t.recall, 0.85);
+  EXPECT_GE(t.precision, 0.85);
+  EXPECT_LE(t.median_height_error_m, 0.05);
 }

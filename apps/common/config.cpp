@@ -42,6 +42,14 @@ void visit(PipelineConfig& c, F&& f) {
   f("voxel", "max_cells", vx.max_cells);
   f("voxel", "bounds_gap_m", vx.bounds_gap_m);
   f("voxel", "bounds_sample", vx.bounds_sample);
+  auto& gh = c.map.ghosts;
+  f("ghosts", "enabled", gh.enabled);
+  f("ghosts", "max_points", gh.max_points);
+  f("ghosts", "min_pass_ratio", gh.min_pass_ratio);
+  f("ghosts", "min_passes", gh.min_passes);
+  f("ghosts", "min_layer_offset", gh.min_layer_offset);
+  f("ghosts", "end_skip_m", gh.end_skip_m);
+  f("ghosts", "max_rays", gh.max_rays);
   auto& ly = c.map.layers;
   f("layers", "min_points_per_voxel", ly.min_points_per_voxel);
   f("layers", "isolated_min_points", ly.isolated_min_points);
@@ -229,6 +237,13 @@ void validate(const PipelineConfig& c) {
   require(vx.bounds_gap_m > 0, "voxel.bounds_gap_m: must be > 0");
   require(vx.bounds_sample > 0 && vx.bounds_sample <= 100'000'000,
           "voxel.bounds_sample: must be in [1, 1e8]");
+  const auto& gh = c.map.ghosts;
+  require(gh.max_points >= 1 && gh.max_points <= 65535, "ghosts.max_points: must be in [1, 65535]");
+  require(gh.min_pass_ratio > 0, "ghosts.min_pass_ratio: must be > 0");
+  require(gh.min_passes >= 1, "ghosts.min_passes: must be >= 1");
+  require(gh.min_layer_offset >= 0, "ghosts.min_layer_offset: must be >= 0");
+  require(gh.end_skip_m >= 0, "ghosts.end_skip_m: must be >= 0");
+  require(gh.max_rays >= 1 && gh.max_rays <= 1'000'000'000, "ghosts.max_rays: must be in [1, 1e9]");
   const auto& ly = c.map.layers;
   require(ly.min_points_per_voxel >= 1 && ly.min_points_per_voxel <= 65535,
           "layers.min_points_per_voxel: must be in [1, 65535]");

@@ -33,6 +33,11 @@ MapResult make_map(PointCloud cloud, const MapParams& params) {
   r.bounds = cloud::robust_bounds(cloud.points, params.voxel);
   r.voxels = cloud::voxelize(cloud.points, r.bounds, params.voxel);
   r.timings.push_back({"voxelize", sw.lap_ms()});
+  // Rays need the scanner each point came from: with several scanners and no attribution, skip.
+  if (cloud.scanners.size() == 1) {
+    r.ghosts = cloud::remove_ghost_voxels(r.voxels, cloud.points, cloud.scanners[0], params.ghosts);
+    r.timings.push_back({"ghosts", sw.lap_ms()});
+  }
 
   r.layers = cloud::analyse_layers(r.voxels, params.layers);
   for (const auto& w : r.layers.warnings) r.warnings.push_back(w);

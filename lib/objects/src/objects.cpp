@@ -5,6 +5,8 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <optional>
+#include <Eigen/Cholesky>
 #include <opencv2/imgproc.hpp>
 
 #include "indoormap/core/errors.hpp"
@@ -20,6 +22,12 @@ constexpr int kWallFaceCells = 3;
 // A top surface this close below the scanner is seen at so grazing an angle that its samples
 // leave gaps: no data there is no evidence of an empty cell.
 constexpr double kMinDropBelowScanner_m = 0.1;
+// A wall component with more unknown cells than this share of the cells around it is a piece of
+// the room's outer wall, not a pillar standing in the room.
+constexpr double kPillarMaxUnknownShare = 0.25;
+// A pillar's seen face is round when the circle fitted to its cell centres stays this close to
+// them (in cells): a corner of two flat faces leaves about a cell of residual.
+constexpr double kPillarCircleMaxRmsCells = 0.5;
 
 struct Column {
   std::int64_t bottom = -1, top = -1;  // layers; -1: nothing above the floor
@@ -192,6 +200,156 @@ Labels merge_small_pieces(const Labels& in, const Grid<std::uint8_t>& mask, Conn
   return label_components(merged_mask, conn, [&](CellIndex a, CellIndex b) {
     return find(in.labels.at(a)) == find(in.labels.at(b));
   });
+}
+
+struct Circle {
+  Eigen::Vector2d center = Eigen::Vector2d::Zero();
+  double radius = 0.0, rms = 0.0;
+};
+
+// Algebraic (Kasa) circle fit: x^2 + y^2 + D x + E y + F = 0 in least squares.
+std::optional<Circle> fit_circle(const std::vector<Eigen::Vector2d>& pts) {
+  if (pts.size() < 5) return std::nullopt;
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (const auto& p : pts) mean += p;
+  mean /= static_cast<double>(pts.size());
+  Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d atb = Eigen::Vector3d::Zero();
+  for (const auto& q : pts) {
+    const Eigen::Vector2d p = q - mean;  // centred for conditioning
+    const Eigen::Vector3d row(p.x(), p.y(), 1.0);
+    ata += row * row.transpose();
+    atb -= row * p.squaredNorm();
+  }
+  const Eigen::Vector3d x = ata.ldlt().solve(atb);
+  if (!x.allFinite()) return std::nullopt;
+  Circle c;
+  c.center = mean + Eigen::Vector2d(-x[0] / 2, -x[1] / 2);
+  const double r2 = x[0] * x[0] / 4 + x[1] * x[1] / 4 - x[2];
+  if (!(r2 > 0)) return std::nullopt;
+  c.radius = std::sqrt(r2);
+  double ss = 0.0;
+  for (const auto& p : pts) ss += std::pow((p - c.center).norm() - c.radius, 2);
+  c.rms = std::sqrt(ss / static_cast<double>(pts.size()));
+  return c;
+}
+
+// Pillars and columns: wall-class components that stand free in the room (few unknown cells
+// around them) and are small. They reach the wall band, so the paper's layout makes them wall, and
+// a scanner sees only their front: the footprint is the circle fitted to the seen face when it
+// fits (a round pillar), else the minimum-area rectangle of the seen cells.
+void add_pillars(const Grid<Cell>& layout, const GridGeometry& geo, const cloud::VoxelGrid& voxels,
+                 const cloud::LayerAnalysis& layers, const ObjectParams& params,
+                 ObjectsResult& res) {
+  const int w = layout.width, h = layout.height;
+  cv::Mat wall(h, w, CV_8U, cv::Scalar(0));
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c)
+      if (layout.at(c, r) == Cell::kWall) wall.at<std::uint8_t>(r, c) = 1;
+  cv::Mat labels, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(wall, labels, stats, centroids, 8, CV_32S);
+  const double cell = geo.cell_m();
+  for (int lab = 1; lab < n; ++lab) {
+    const int x0 = stats.at<int>(lab, cv::CC_STAT_LEFT), y0 = stats.at<int>(lab, cv::CC_STAT_TOP);
+    const int bw = stats.at<int>(lab, cv::CC_STAT_WIDTH), bh = stats.at<int>(lab, cv::CC_STAT_HEIGHT);
+    if (std::max(bw, bh) * cell > params.pillar_max_extent_m) continue;
+    if (x0 == 0 || y0 == 0 || x0 + bw == w || y0 + bh == h) continue;
+    // The ring of cells around the component: a piece of the outer wall (between a door and a
+    // corner) has the unknown outside along one side; a pillar has the room all around.
+    std::int64_t ring = 0, unknown = 0;
+    std::vector<CellIndex> cells;
+    for (int r = y0 - 1; r <= y0 + bh; ++r)
+      for (int c = x0 - 1; c <= x0 + bw; ++c) {
+        if (labels.at<int>(r, c) == lab) {
+          cells.push_back({c, r});
+          continue;
+        }
+        bool next_to = false;
+        for (int dr = -1; dr <= 1 && !next_to; ++dr)
+          for (int dc = -1; dc <= 1 && !next_to; ++dc)
+            next_to = layout.contains(c + dc, r + dr) && labels.at<int>(r + dr, c + dc) == lab;
+        if (!next_to) continue;
+        ++ring;
+        unknown += layout.at(c, r) == Cell::kUnknown;
+      }
+    if (ring == 0 || unknown > kPillarMaxUnknownShare * static_cast<double>(ring)) continue;
+    if (static_cast<double>(cells.size()) * cell * cell < params.min_area_m2) continue;
+    // A pillar goes up to the ceiling: most of its columns hold points at the top of the wall
+    // band. The front of a tall shelf that reaches into the band in a low room ends below it.
+    std::size_t reach_top = 0;
+    const std::int64_t top_hi = std::min(layers.wall_band.hi_layer, voxels.nz - 1);
+    for (const auto& c : cells)
+      for (std::int64_t z = std::max<std::int64_t>(0, top_hi - 2); z <= top_hi; ++z)
+        if (voxels.count(c.col, c.row, z)) {
+          ++reach_top;
+          break;
+        }
+    if (2 * reach_top < cells.size()) continue;
+
+    FurnitureObject o;
+    o.id = static_cast<int>(res.objects.size()) + 1;
+    o.kind = "pillar";
+    o.cells = static_cast<std::int64_t>(cells.size());
+    o.start_cell = cells.front();
+    o.min_cell = {x0, y0};
+    o.max_cell = {x0 + bw - 1, y0 + bh - 1};
+    std::vector<Eigen::Vector2d> centres;
+    for (const auto& c : cells) centres.push_back(geo.center_of(c));
+    const auto circle = fit_circle(centres);
+    const double extent = std::max(bw, bh) * cell;
+    if (circle && circle->rms <= kPillarCircleMaxRmsCells * cell && circle->radius >= cell &&
+        circle->radius <= extent) {
+      // The fit runs through the centres of the face cells: the surface lies inside them.
+      const double radius = circle->radius;
+      constexpr int kVertices = 32;
+      for (int k = 0; k < kVertices; ++k) {
+        const double a = 2.0 * M_PI * k / kVertices;
+        o.footprint_m.push_back(circle->center + radius * Eigen::Vector2d(std::cos(a), std::sin(a)));
+      }
+    } else {
+      std::vector<Eigen::Vector2d> corners;
+      for (const auto& c : cells)
+        for (const auto& d : {Eigen::Vector2d(-0.5, -0.5), Eigen::Vector2d(0.5, -0.5),
+                              Eigen::Vector2d(0.5, 0.5), Eigen::Vector2d(-0.5, 0.5)})
+          corners.push_back(geo.center_of(c) + d * cell);
+      const OrientedBox b = min_area_box(corners);
+      const Eigen::Vector2d u(std::cos(b.angle_deg * M_PI / 180), std::sin(b.angle_deg * M_PI / 180));
+      const Eigen::Vector2d v(-u.y(), u.x());
+      for (const auto& [su, sv] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
+        o.footprint_m.push_back(b.center_m + su * 0.5 * b.length_m * u + sv * 0.5 * b.width_m * v);
+    }
+    o.box = min_area_box(o.footprint_m);
+    double area2 = 0.0;
+    for (std::size_t i = 0; i < o.footprint_m.size(); ++i) {
+      const auto& a = o.footprint_m[i];
+      const auto& b = o.footprint_m[(i + 1) % o.footprint_m.size()];
+      area2 += a.x() * b.y() - b.x() * a.y();
+    }
+    o.area_m2 = std::abs(area2) / 2;
+    o.min_m = o.footprint_m.front();
+    o.max_m = o.footprint_m.front();
+    for (const auto& p : o.footprint_m) {
+      o.min_m = o.min_m.cwiseMin(p);
+      o.max_m = o.max_m.cwiseMax(p);
+    }
+    o.touches_wall = false;  // it is the wall class itself, standing free
+    std::int64_t top = -1;
+    for (const auto& c : cells) {
+      res.labels.at(c) = o.id;
+      for (std::int64_t z = std::max<std::int64_t>(0, layers.floor_layer + 1); z < voxels.nz; ++z)
+        if (voxels.count(c.col, c.row, z)) {
+          top = std::max(top, z);
+          o.point_count += voxels.count(c.col, c.row, z);
+        }
+    }
+    if (top >= 0) {
+      o.has_height = true;
+      o.on_floor = true;
+      o.z_min_m = voxels.layer_center_m(layers.floor_layer);
+      o.z_max_m = std::min(voxels.layer_center_m(top), layers.ceiling_z_m);
+    }
+    res.objects.push_back(std::move(o));
+  }
 }
 
 }  // namespace
@@ -378,6 +536,7 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
                ++z)
             o.point_count += voxels.count(c, r, z);
   }
+  if (params.pillar_max_extent_m > 0) add_pillars(layout, geo, voxels, layers, params, res);
   return res;
 }
 

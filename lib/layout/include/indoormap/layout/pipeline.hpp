@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "indoormap/cloud/ghosts.hpp"
 #include "indoormap/cloud/level.hpp"
 #include "indoormap/cloud/voxel.hpp"
 #include "indoormap/core/cloud.hpp"
@@ -16,6 +17,7 @@ namespace indoormap::layout {
 struct MapParams {
   cloud::LevelParams level;
   cloud::VoxelParams voxel;
+  cloud::GhostParams ghosts;  ///< applied with exactly one known scanner
   cloud::LayerParams layers;
   LayoutParams layout;
 };
@@ -29,7 +31,8 @@ struct MapResult {
   cloud::LevelResult level;
   PointCloud cloud_map;                   ///< the input cloud rotated into the levelled map frame
   cloud::Bounds3 bounds;                  ///< robust bounds, map frame
-  cloud::VoxelGrid voxels;
+  cloud::VoxelGrid voxels;                ///< ghost voxels cleared (ghosts)
+  cloud::GhostResult ghosts;
   cloud::LayerAnalysis layers;
   GridGeometry geometry;                  ///< the 2D grid of M_w, M_f and M_r (map frame)
   Grid<std::uint8_t> walls;               ///< M_w: occupancy of the wall band

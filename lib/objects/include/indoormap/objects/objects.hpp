@@ -28,6 +28,9 @@ struct ObjectParams {
   /// low enough to reach the furniture band, a wall cupboard): kind "hanging", not furniture
   /// standing on the floor. It stays an obstacle in M_r.
   double hanging_min_clearance_m = 1.0;
+  /// Pillars and columns: a wall-class component no larger than this (bounding box) that stands
+  /// free in the room is listed with kind "pillar". 0: none are listed.
+  double pillar_max_extent_m = 1.5;
   double max_vertical_gap_m = 0.3;  ///< a column's top is the highest point reachable from below
                                     ///< without an empty gap longer than this (a lamp above a table
                                     ///< is not the table's top)
@@ -42,7 +45,8 @@ struct OrientedBox {
 
 struct FurnitureObject {
   int id = 0;                      ///< 1.. in raster order of start_cell
-  std::string kind = "furniture";  ///< "furniture" (stands on or near the floor) or "hanging"
+  std::string kind = "furniture";  ///< "furniture" (stands on or near the floor), "hanging" or
+                                   ///< "pillar"
   std::int64_t cells = 0;
   CellIndex start_cell;          ///< first cell in raster order (row 0 first)
   CellIndex min_cell, max_cell;  ///< bounding box in cells (inclusive)

@@ -1,0 +1,42 @@
+#pragma once
+// Ghost voxels: mixed pixels (a return between a depth edge and the surface behind it) and other
+// stray returns that float in space the scanner saw through. Not in the paper. The points behind an
+// object's silhouette edge form a sparse veil that the projection turns into a wall of obstacles:
+// it fences off the shadow behind a bin and gives a pillar a tail reaching to the wall.
+//
+// The test is free-space evidence along the rays: every point's ray from the scanner to it crossed
+// empty space. A voxel that holds a few points but that many rays passed through is not a surface.
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "indoormap/cloud/voxel.hpp"
+
+namespace indoormap::cloud {
+
+struct GhostParams {
+  bool enabled = true;
+  int max_points = 2;         ///< only voxels with at most this many points can be ghosts
+  double min_pass_ratio = 4;  ///< rays through the voxel per point in it, at least
+  int min_passes = 4;         ///< and at least this many rays through it
+  /// A ray counts for a voxel only when it ends this many layers above or below it: a ray that
+  /// grazes a horizontal surface (a table top seen from afar) runs through the surface's own
+  /// layer before it lands, and would take the top for a ghost.
+  int min_layer_offset = 4;
+  double end_skip_m = 0.1;            ///< the last stretch of every ray (its own surface) counts not
+  std::size_t max_rays = 500'000;   ///< at most this many rays are traced (every k-th point)
+};
+
+struct GhostResult {
+  std::int64_t voxels_removed = 0;
+  std::uint64_t points_removed = 0;  ///< points in the removed voxels
+  std::size_t rays = 0;              ///< rays traced
+};
+
+/// Clears the ghost voxels of `grid` (their counts become 0). `points` and `scanner` are in the
+/// grid's frame; every point is taken as a return of that one scanner. Points outside the grid
+/// are ignored. Does nothing when !params.enabled.
+GhostResult remove_ghost_voxels(VoxelGrid& grid, const std::vector<Eigen::Vector3f>& points,
+                                const Eigen::Vector3d& scanner, const GhostParams& params = {});
+
+}  // namespace indoormap::cloud
