@@ -6,6 +6,7 @@
 #include <map>
 #include <random>
 
+#include "indoormap/cloud/ghosts.hpp"
 #include "indoormap/cloud/level.hpp"
 #include "indoormap/cloud/voxel.hpp"
 #include "indoormap/core/errors.hpp"
@@ -306,4 +307,134 @@ TEST(Layers, IsolatedStrayReturnsAreNotObstacles) {
   EXPECT_EQ(m.at(2, 2), 1);
   EXPECT_EQ(m.at(3, 2), 1);
   EXPECT_EQ(project_band(g, all, 1, 1).at(0, 0), 1);  // filter off
+}
+
+TEST(Layers, MinExtentDropsThinSlabsFromTheBand) {
+  VoxelGrid g;
+  g.cell_m = 0.05;
+  g.nx = 3;
+  g.ny = 1;
+  g.nz = 10;
+  g.counts.assign(g.nx * g.ny * g.nz, 0);
+  auto at = [&](int x, int z) -> std::uint16_t& { return g.counts[z * g.nx + x]; };
+  for (int z = 0; z < 10; ++z) at(0, z) = 5;  // a wall through the band
+  at(1, 6) = 9;                                // a lamp: one layer
+  at(1, 7) = 9;                                // ... two layers
+  at(2, 2) = 1;                                // a window's lintel and sill: 0.25 m apart
+  at(2, 7) = 1;
+  HeightBand band;
+  band.lo_layer = 0;
+  band.hi_layer = 9;
+  const Grid<std::uint8_t> m = project_band(g, band, 1, 1, 4);
+  EXPECT_EQ(m.at(0, 0), 1);
+  EXPECT_EQ(m.at(1, 0), 0);
+  EXPECT_EQ(m.at(2, 0), 1);  // the extent counts from the lowest to the highest occupied voxel
+  EXPECT_EQ(project_band(g, band, 1, 1, 1).at(1, 0), 1);  // 1: the paper's rule
+}
+
+namespace {
+
+// A scan of a floor (z = 0), a wall at x = 6 and a box [2, 2.5] x [-0.3, 0.3] x [0, 0.5] from a
+// scanner at (0, 0, 1.3), 0.25 degree steps; every `mixed_every`-th ray that grazes past the box
+// onto the floor also returns a mixed pixel halfway. box_points / mixed_points: which are which.
+struct RayScan {
+  std::vector<Eigen::Vector3f> points;
+  std::vector<std::size_t> box_points, mixed_points;
+  Eigen::Vector3d scanner{0, 0, 1.3};
+};
+
+RayScan ray_scan(int mixed_every) {
+  RayScan s;
+  int floor_rays_past_box = 0;
+  for (double az = -20; az <= 20; az += 0.25)
+    for (double el = -60; el <= 10; el += 0.25) {
+      const double a = az * M_PI / 180, e = el * M_PI / 180;
+      const Eigen::Vector3d d(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
+      double best = 1e9;
+      int what = -1;  // 0 floor, 1 wall, 2 box
+      if (d.z() < 0) best = -s.scanner.z() / d.z(), what = 0;
+      if (d.x() > 0 && 6.0 / d.x() < best) best = 6.0 / d.x(), what = 1;
+      // Box: slab test.
+      double t0 = 0, t1 = 1e9;
+      const double lo[3] = {2, -0.3, 0}, hi[3] = {2.5, 0.3, 0.5};
+      for (int k = 0; k < 3; ++k) {
+        if (std::abs(d[k]) < 1e-12) {
+          if (s.scanner[k] < lo[k] || s.scanner[k] > hi[k]) t0 = 1e18;
+          continue;
+        }
+        double ta = (lo[k] - s.scanner[k]) / d[k], tb = (hi[k] - s.scanner[k]) / d[k];
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+      }
+      const bool hits_box = t0 <= t1 && t0 < best;
+      if (hits_box) best = t0, what = 2;
+      if (what < 0 || best > 20) continue;
+      const Eigen::Vector3d p = s.scanner + best * d;
+      if (what == 2) s.box_points.push_back(s.points.size());
+      s.points.push_back(p.cast<float>());
+      // A ray that just clears the box's far top edge onto the floor: a mixed pixel halfway
+      // between the edge and the floor.
+      const double t_edge = 2.5 / d.x();
+      const Eigen::Vector3d edge = s.scanner + t_edge * d;
+      const Eigen::Vector3d over = s.scanner + (0.5 * (t_edge + best)) * d;
+      if (what == 0 && std::abs(edge.y()) < 0.3 && edge.z() > 0.5 && edge.z() < 0.6 &&
+          ++floor_rays_past_box % mixed_every == 0) {
+        s.mixed_points.push_back(s.points.size());
+        s.points.push_back(over.cast<float>());
+      }
+    }
+  return s;
+}
+
+std::size_t voxel_of(const VoxelGrid& g, const Eigen::Vector3f& p) {
+  // The same float arithmetic as voxelize: points on a voxel boundary land where it puts them.
+  const float inv = static_cast<float>(1.0 / g.cell_m);
+  const auto ix = static_cast<std::int64_t>((p.x() - static_cast<float>(g.origin_m.x())) * inv);
+  const auto iy = static_cast<std::int64_t>((p.y() - static_cast<float>(g.origin_m.y())) * inv);
+  const auto iz = static_cast<std::int64_t>((p.z() - static_cast<float>(g.origin_m.z())) * inv);
+  return static_cast<std::size_t>((iz * g.ny + iy) * g.nx + ix);
+}
+
+}  // namespace
+
+TEST(Ghosts, MixedPixelsBehindAnEdgeGoTheSurfacesStay) {
+  const RayScan s = ray_scan(7);
+  ASSERT_GT(s.mixed_points.size(), 10u);
+  ASSERT_GT(s.box_points.size(), 100u);
+  VoxelParams vp;
+  VoxelGrid g = voxelize(s.points, robust_bounds(s.points, vp), vp);
+  const VoxelGrid before = g;
+  const GhostResult r = remove_ghost_voxels(g, s.points, s.scanner);
+  EXPECT_TRUE(r.applied);
+  EXPECT_EQ(r.rays, s.points.size());
+  std::size_t mixed_left = 0, box_lost = 0;
+  for (auto i : s.mixed_points) mixed_left += g.counts[voxel_of(g, s.points[i])] > 0;
+  for (auto i : s.box_points) box_lost += g.counts[voxel_of(g, s.points[i])] == 0;
+  // Most of the veil goes; the box (its front face and its top, seen at a grazing angle) stays.
+  EXPECT_LE(mixed_left, s.mixed_points.size() / 5) << mixed_left << " of " << s.mixed_points.size();
+  EXPECT_EQ(box_lost, 0u);
+  std::uint64_t removed = 0;
+  for (std::size_t i = 0; i < g.counts.size(); ++i) removed += before.counts[i] - g.counts[i];
+  EXPECT_EQ(removed, r.points_removed);
+
+  GhostParams off;
+  off.enabled = false;
+  VoxelGrid g2 = before;
+  EXPECT_FALSE(remove_ghost_voxels(g2, s.points, s.scanner, off).applied);
+  EXPECT_EQ(g2.counts, before.counts);
+}
+
+TEST(Ghosts, EmptyInputsAndFarScannerAreHarmless) {
+  VoxelGrid empty;
+  EXPECT_EQ(remove_ghost_voxels(empty, {}, {0, 0, 0}).voxels_removed, 0);
+  const RayScan s = ray_scan(7);
+  VoxelParams vp;
+  VoxelGrid g = voxelize(s.points, robust_bounds(s.points, vp), vp);
+  // A scanner far outside the grid: rays are clipped to the grid, nothing breaks.
+  EXPECT_NO_THROW(remove_ghost_voxels(g, s.points, {-500, 300, 80}));
+  VoxelGrid g3 = voxelize(s.points, robust_bounds(s.points, vp), vp);
+  const auto r = remove_ghost_voxels(
+      g3, s.points, {std::nan(""), 0, 0});  // no usable scanner: nothing done
+  EXPECT_FALSE(r.applied);
 }

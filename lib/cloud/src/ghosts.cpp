@@ -9,7 +9,9 @@ namespace indoormap::cloud {
 GhostResult remove_ghost_voxels(VoxelGrid& g, const std::vector<Eigen::Vector3f>& points,
                                 const Eigen::Vector3d& scanner, const GhostParams& params) {
   GhostResult res;
-  if (!params.enabled || g.counts.empty() || points.empty() || !scanner.allFinite()) return res;
+  if (!params.enabled || !scanner.allFinite()) return res;
+  res.applied = true;
+  if (g.counts.empty() || points.empty()) return res;
   const std::int64_t n[3] = {g.nx, g.ny, g.nz};
   const std::int64_t nxy = g.nx * g.ny;
   std::vector<std::uint8_t> passes(g.counts.size(), 0);  // saturating

@@ -37,6 +37,9 @@ MapResult make_map(PointCloud cloud, const MapParams& params) {
   if (cloud.scanners.size() == 1) {
     r.ghosts = cloud::remove_ghost_voxels(r.voxels, cloud.points, cloud.scanners[0], params.ghosts);
     r.timings.push_back({"ghosts", sw.lap_ms()});
+  } else if (params.ghosts.enabled && cloud.scanners.size() > 1) {
+    r.warnings.push_back("ghost filter skipped: " + std::to_string(cloud.scanners.size()) +
+                         " scanner positions and no record of which point came from which");
   }
 
   r.layers = cloud::analyse_layers(r.voxels, params.layers);

@@ -26,8 +26,12 @@ constexpr double kMinDropBelowScanner_m = 0.1;
 // the room's outer wall, not a pillar standing in the room.
 constexpr double kPillarMaxUnknownShare = 0.25;
 // A pillar's seen face is round when the circle fitted to its cell centres stays this close to
-// them (in cells): a corner of two flat faces leaves about a cell of residual.
+// them (in cells). The corner of a square pillar leaves as little (0.49 cells for two faces of 8
+// cells), so flat faces are recognised first (kPillarFlatShare).
 constexpr double kPillarCircleMaxRmsCells = 0.5;
+// A pillar's seen face is flat (one or two faces of a square pillar) when this share of its cells
+// lies within a cell of its minimum-area rectangle's border; half a ring has about half there.
+constexpr double kPillarFlatShare = 0.85;
 
 struct Column {
   std::int64_t bottom = -1, top = -1;  // layers; -1: nothing above the floor
@@ -293,9 +297,27 @@ void add_pillars(const Grid<Cell>& layout, const GridGeometry& geo, const cloud:
     o.start_cell = cells.front();
     o.min_cell = {x0, y0};
     o.max_cell = {x0 + bw - 1, y0 + bh - 1};
-    std::vector<Eigen::Vector2d> centres;
-    for (const auto& c : cells) centres.push_back(geo.center_of(c));
-    const auto circle = fit_circle(centres);
+    std::vector<Eigen::Vector2d> centres, corners;
+    for (const auto& c : cells) {
+      centres.push_back(geo.center_of(c));
+      for (const auto& d : {Eigen::Vector2d(-0.5, -0.5), Eigen::Vector2d(0.5, -0.5),
+                            Eigen::Vector2d(0.5, 0.5), Eigen::Vector2d(-0.5, 0.5)})
+        corners.push_back(geo.center_of(c) + d * cell);
+    }
+    const OrientedBox rect = min_area_box(corners);
+    const Eigen::Vector2d ru(std::cos(rect.angle_deg * M_PI / 180),
+                             std::sin(rect.angle_deg * M_PI / 180));
+    const Eigen::Vector2d rv(-ru.y(), ru.x());
+    std::size_t on_border = 0;
+    for (const auto& p : centres) {
+      const Eigen::Vector2d q = p - rect.center_m;
+      const double to_border = std::min(0.5 * rect.length_m - std::abs(q.dot(ru)),
+                                        0.5 * rect.width_m - std::abs(q.dot(rv)));
+      on_border += to_border <= cell;
+    }
+    const bool flat =
+        static_cast<double>(on_border) >= kPillarFlatShare * static_cast<double>(centres.size());
+    const auto circle = flat ? std::nullopt : fit_circle(centres);
     const double extent = std::max(bw, bh) * cell;
     if (circle && circle->rms <= kPillarCircleMaxRmsCells * cell && circle->radius >= cell &&
         circle->radius <= extent) {
@@ -307,16 +329,9 @@ void add_pillars(const Grid<Cell>& layout, const GridGeometry& geo, const cloud:
         o.footprint_m.push_back(circle->center + radius * Eigen::Vector2d(std::cos(a), std::sin(a)));
       }
     } else {
-      std::vector<Eigen::Vector2d> corners;
-      for (const auto& c : cells)
-        for (const auto& d : {Eigen::Vector2d(-0.5, -0.5), Eigen::Vector2d(0.5, -0.5),
-                              Eigen::Vector2d(0.5, 0.5), Eigen::Vector2d(-0.5, 0.5)})
-          corners.push_back(geo.center_of(c) + d * cell);
-      const OrientedBox b = min_area_box(corners);
-      const Eigen::Vector2d u(std::cos(b.angle_deg * M_PI / 180), std::sin(b.angle_deg * M_PI / 180));
-      const Eigen::Vector2d v(-u.y(), u.x());
       for (const auto& [su, sv] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
-        o.footprint_m.push_back(b.center_m + su * 0.5 * b.length_m * u + sv * 0.5 * b.width_m * v);
+        o.footprint_m.push_back(rect.center_m + su * 0.5 * rect.length_m * ru +
+                                sv * 0.5 * rect.width_m * rv);
     }
     o.box = min_area_box(o.footprint_m);
     double area2 = 0.0;

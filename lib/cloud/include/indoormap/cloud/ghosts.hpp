@@ -28,6 +28,7 @@ struct GhostParams {
 };
 
 struct GhostResult {
+  bool applied = false;              ///< the filter ran (enabled, one scanner known)
   std::int64_t voxels_removed = 0;
   std::uint64_t points_removed = 0;  ///< points in the removed voxels
   std::size_t rays = 0;              ///< rays traced
