@@ -171,7 +171,8 @@ TEST(MapEval, HandMadeResultFilesGiveKnownScores) {
   test::write_text(res / "objects.json", R"({"objects": [
     {"id": 7, "obb": {"center": [1.0, 2.5], "width_m": 0.4, "length_m": 1.0, "angle_deg": 0}, "z_min_m": 0.0, "z_max_m": 1.3},
     {"id": "x", "footprint": [[3.5, 2.5], [3.9, 2.5], [3.9, 2.9], [3.5, 2.9]], "z_min_m": 0.0, "z_max_m": 0.5},
-    {"id": "h", "kind": "hanging", "footprint": [[0.5, 0.5], [0.9, 0.5], [0.9, 0.9], [0.5, 0.9]], "z_min_m": 2.0, "z_max_m": 2.1}]})");
+    {"id": "h", "kind": "hanging", "footprint": [[0.5, 0.5], [0.9, 0.5], [0.9, 0.9], [0.5, 0.9]], "z_min_m": 2.0, "z_max_m": 2.1},
+    {"id": "l", "kind": "lamp", "footprint": [[2.5, 0.5], [2.9, 0.5], [2.9, 0.9], [2.5, 0.9]], "z_min_m": 2.3, "z_max_m": 2.4}]})");
   // Room: the truth room shifted by 5 cm.
   test::write_text(res / "room.geojson", R"({"type": "FeatureCollection", "features": [
     {"type": "Feature", "properties": {"kind": "room"},
@@ -188,7 +189,7 @@ TEST(MapEval, HandMadeResultFilesGiveKnownScores) {
   const json& ob = e["objects"];
   EXPECT_EQ(ob["truth_count"], 2);  // cabinet and desk; the lamp hangs from the ceiling
   EXPECT_EQ(ob["matched"], 1);
-  EXPECT_EQ(ob["result_count"], 2);  // the "hanging" result is compared only with the lamps
+  EXPECT_EQ(ob["result_count"], 2);  // "hanging" and "lamp" results are compared only with lamps
   EXPECT_DOUBLE_EQ(ob["recall"].get<double>(), 0.5);
   EXPECT_DOUBLE_EQ(ob["precision"].get<double>(), 0.5);
   EXPECT_EQ(ob["matches"][0]["truth_id"], "cab");
@@ -206,7 +207,7 @@ TEST(MapEval, HandMadeResultFilesGiveKnownScores) {
                                                 " --include-hanging -o " + (dir / "e2").string());
   ASSERT_EQ(r2.exit_code, 0) << r2.err;
   EXPECT_EQ(read_json(dir / "e2" / "eval.json")["objects"]["truth_count"], 3);
-  EXPECT_EQ(read_json(dir / "e2" / "eval.json")["objects"]["result_count"], 3);
+  EXPECT_EQ(read_json(dir / "e2" / "eval.json")["objects"]["result_count"], 4);
 }
 
 TEST(MapEval, MissingOutputsAreReportedNotGuessed) {

@@ -261,7 +261,7 @@ int run(int argc, char** argv) {
     for (const auto& f : truth.furniture)
       if (f.on_floor || p.include_hanging) expected.push_back(f);
     // Without --include-hanging both sides are what stands on the floor: result objects of kind
-    // "hanging" (lamps) are left out as the truth's lamps are.
+    // "hanging" or "lamp" are left out as the truth's lamps are.
     auto objects = sim::read_objects_json(dir / "objects.json");
     if (!p.include_hanging)
       std::erase_if(objects, [](const sim::EvalObject& o) { return !o.on_floor; });

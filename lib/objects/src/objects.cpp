@@ -32,6 +32,10 @@ constexpr double kPillarCircleMaxRmsCells = 0.5;
 // A pillar's seen face is flat (one or two faces of a square pillar) when this share of its cells
 // lies within a cell of its minimum-area rectangle's border; half a ring has about half there.
 constexpr double kPillarFlatShare = 0.85;
+// A lamp hangs: at least this much empty space below its lowest point in every one of its columns.
+constexpr double kLampMinClearance_m = 0.2;
+// Wall components smaller than this (cells) are a lamp's cords, not walls.
+constexpr int kLampCordMaxCells = 5;
 
 struct Column {
   std::int64_t bottom = -1, top = -1;  // layers; -1: nothing above the floor
@@ -367,6 +371,144 @@ void add_pillars(const Grid<Cell>& layout, const GridGeometry& geo, const cloud:
   }
 }
 
+// Lamps and other ceiling fixtures: points hanging above the furniture band and below the
+// ceiling, over the room (known cells more than kWallFaceCells from a wall), with empty space
+// between them and what stands below. The wall band's projection leaves them out (thin slabs, not walls) and
+// the furniture band ends below them, so no other class holds them. Their cells may lie over a
+// table's: they are listed with their own cell list, not in `labels`.
+void add_lamps(const Grid<Cell>& layout, const GridGeometry& geo, const cloud::VoxelGrid& voxels,
+               const cloud::LayerAnalysis& layers, const ObjectParams& params,
+               ObjectsResult& res) {
+  const int w = layout.width, h = layout.height;
+  if (layers.furniture_band.hi_layer < layers.furniture_band.lo_layer) return;  // no bands
+  const std::int64_t z_lo = std::max<std::int64_t>(layers.furniture_band.hi_layer + 1, 0);
+  // Below the ceiling and its smear. Under a sloped ceiling this is its lowest part: lamps
+  // higher up are not found.
+  const std::int64_t z_hi = std::min<std::int64_t>(layers.ceiling_layer - 2, voxels.nz - 1);
+  if (z_hi < z_lo) return;
+  const auto gap = static_cast<std::int64_t>(std::ceil(kLampMinClearance_m / voxels.cell_m));
+  // Walls, without the specks a lamp's cords make: a cord runs up through the wall band and is a
+  // wall cell or two in the layout, inside the lamp.
+  cv::Mat wall(h, w, CV_8U, cv::Scalar(0));
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) wall.at<std::uint8_t>(r, c) = layout.at(c, r) == Cell::kWall;
+  {
+    cv::Mat wl, ws, wc;
+    const int nw = cv::connectedComponentsWithStats(wall, wl, ws, wc, 8, CV_32S);
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w; ++c)
+        if (const int lab = wl.at<int>(r, c);
+            lab && lab < nw && ws.at<int>(lab, cv::CC_STAT_AREA) < kLampCordMaxCells)
+          wall.at<std::uint8_t>(r, c) = 0;
+  }
+  Grid<std::int32_t> bottom(w, h, -1), top(w, h, -1);
+  cv::Mat mask(h, w, CV_8U, cv::Scalar(0));
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) {
+      if (layout.at(c, r) == Cell::kUnknown || wall.at<std::uint8_t>(r, c)) continue;
+      bool near_wall = false;
+      for (int dr = -kWallFaceCells; dr <= kWallFaceCells && !near_wall; ++dr)
+        for (int dc = -kWallFaceCells; dc <= kWallFaceCells && !near_wall; ++dc)
+          near_wall = layout.contains(c + dc, r + dr) && wall.at<std::uint8_t>(r + dr, c + dc);
+      if (near_wall) continue;
+      std::int64_t lo = -1, hi = -1;
+      for (std::int64_t z = z_lo; z <= z_hi; ++z)
+        if (voxels.count(c, r, z)) {
+          if (lo < 0) lo = z;
+          hi = z;
+        }
+      if (lo < 0) continue;
+      // Hanging: nothing in the `gap` layers below its lowest point (a tall wardrobe's top
+      // continues from below).
+      bool clear = true;
+      for (std::int64_t zz = std::max<std::int64_t>(0, lo - gap); zz < lo && clear; ++zz)
+        clear = voxels.count(c, r, zz) == 0;
+      if (!clear) continue;
+      mask.at<std::uint8_t>(r, c) = 1;
+      bottom.at(c, r) = static_cast<std::int32_t>(lo);
+      top.at(c, r) = static_cast<std::int32_t>(hi);
+    }
+  // A lamp's underside is flat: its columns start at about one height. Columns that start
+  // higher beside it hold the mixed pixels between its edge and the ceiling; they go.
+  {
+    cv::Mat labels;
+    const int n = cv::connectedComponents(mask, labels, 8, CV_32S);
+    std::vector<std::map<std::int32_t, int>> bottoms(static_cast<std::size_t>(n));
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w; ++c)
+        if (const int lab = labels.at<int>(r, c)) ++bottoms[lab][bottom.at(c, r)];
+    std::vector<std::int32_t> mode(static_cast<std::size_t>(n), 0);
+    for (int lab = 1; lab < n; ++lab)
+      mode[lab] = std::max_element(bottoms[lab].begin(), bottoms[lab].end(),
+                                   [](const auto& a, const auto& b) { return a.second < b.second; })
+                      ->first;
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w; ++c)
+        if (const int lab = labels.at<int>(r, c); lab && std::abs(bottom.at(c, r) - mode[lab]) > 1)
+          mask.at<std::uint8_t>(r, c) = 0;
+  }
+  cv::Mat labels, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(mask, labels, stats, centroids, 8, CV_32S);
+  const double cell = geo.cell_m();
+  for (int lab = 1; lab < n; ++lab) {
+    const int x0 = stats.at<int>(lab, cv::CC_STAT_LEFT), y0 = stats.at<int>(lab, cv::CC_STAT_TOP);
+    const int bw = stats.at<int>(lab, cv::CC_STAT_WIDTH), bh = stats.at<int>(lab, cv::CC_STAT_HEIGHT);
+    const int area = stats.at<int>(lab, cv::CC_STAT_AREA);
+    if (area * cell * cell < params.min_area_m2) continue;
+    if (std::max(bw, bh) * cell > params.lamp_max_extent_m) continue;
+    FurnitureObject o;
+    o.id = static_cast<int>(res.objects.size()) + 1;
+    o.kind = "lamp";
+    o.cells = area;
+    o.min_cell = {x0, y0};
+    o.max_cell = {x0 + bw - 1, y0 + bh - 1};
+    std::vector<Eigen::Vector2d> corners;
+    std::int64_t lo = std::numeric_limits<std::int64_t>::max();
+    std::map<std::int64_t, std::uint64_t> per_layer;  // points
+    for (int r = y0; r < y0 + bh; ++r)
+      for (int c = x0; c < x0 + bw; ++c) {
+        if (labels.at<int>(r, c) != lab) continue;
+        if (o.own_cells.empty()) o.start_cell = {c, r};
+        o.own_cells.push_back({c, r});
+        lo = std::min<std::int64_t>(lo, bottom.at(c, r));
+        for (std::int64_t z = bottom.at(c, r); z <= top.at(c, r); ++z) {
+          o.point_count += voxels.count(c, r, z);
+          per_layer[z] += voxels.count(c, r, z);
+        }
+        for (const auto& d : {Eigen::Vector2d(-0.5, -0.5), Eigen::Vector2d(0.5, -0.5),
+                              Eigen::Vector2d(0.5, 0.5), Eigen::Vector2d(-0.5, 0.5)})
+          corners.push_back(geo.center_of({c, r}) + d * cell);
+      }
+    // The cells are where the lamp's underside was seen: its outline is their minimum-area
+    // rectangle, drawn through the boundary cells' centres as for the furniture (a lamp 1.2 m
+    // long covers 24 cells of 5 cm, not 25).
+    OrientedBox b = min_area_box(corners);
+    b.length_m = std::max(cell, b.length_m - cell);
+    b.width_m = std::max(cell, b.width_m - cell);
+    const Eigen::Vector2d u(std::cos(b.angle_deg * M_PI / 180), std::sin(b.angle_deg * M_PI / 180));
+    const Eigen::Vector2d v(-u.y(), u.x());
+    for (const auto& [su, sv] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
+      o.footprint_m.push_back(b.center_m + su * 0.5 * b.length_m * u + sv * 0.5 * b.width_m * v);
+    o.box = b;
+    o.area_m2 = b.length_m * b.width_m;
+    o.min_m = geo.origin_m() + Eigen::Vector2d(x0, y0) * cell;
+    o.max_m = geo.origin_m() + Eigen::Vector2d(x0 + bw, y0 + bh) * cell;
+    o.has_height = true;
+    o.on_floor = false;
+    // The top: where 95 % of its points lie below (the cords it hangs from hold few points).
+    std::int64_t hi = lo;
+    std::uint64_t below = 0;
+    for (const auto& [z, k] : per_layer) {
+      hi = z;
+      below += k;
+      if (static_cast<double>(below) >= 0.95 * static_cast<double>(o.point_count)) break;
+    }
+    o.z_min_m = voxels.layer_bottom_m(lo);
+    o.z_max_m = voxels.layer_bottom_m(hi + 1);
+    res.objects.push_back(std::move(o));
+  }
+}
+
 }  // namespace
 
 ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
@@ -552,6 +694,7 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
             o.point_count += voxels.count(c, r, z);
   }
   if (params.pillar_max_extent_m > 0) add_pillars(layout, geo, voxels, layers, params, res);
+  if (params.lamp_max_extent_m > 0) add_lamps(layout, geo, voxels, layers, params, res);
   return res;
 }
 
@@ -570,16 +713,18 @@ std::vector<std::vector<std::size_t>> crop_indices(const ObjectsResult& result,
   Grid<std::int32_t> last(w, h, -1);
   for (std::size_t k = 0; k < n_obj; ++k) {
     const auto& o = result.objects[k];
-    for (int r = o.min_cell.row; r <= o.max_cell.row; ++r)
-      for (int c = o.min_cell.col; c <= o.max_cell.col; ++c) {
-        if (result.labels.at(c, r) != o.id) continue;
-        for (int rr = std::max(0, r - dil); rr <= std::min(h - 1, r + dil); ++rr)
-          for (int cc = std::max(0, c - dil); cc <= std::min(w - 1, c + dil); ++cc)
-            if (last.at(cc, rr) != static_cast<std::int32_t>(k)) {
-              last.at(cc, rr) = static_cast<std::int32_t>(k);
-              covered.emplace_back(static_cast<std::int64_t>(rr) * w + cc, static_cast<int>(k));
-            }
-      }
+    std::vector<CellIndex> cells = o.own_cells;
+    if (cells.empty())
+      for (int r = o.min_cell.row; r <= o.max_cell.row; ++r)
+        for (int c = o.min_cell.col; c <= o.max_cell.col; ++c)
+          if (result.labels.at(c, r) == o.id) cells.push_back({c, r});
+    for (const auto& [c, r] : cells)
+      for (int rr = std::max(0, r - dil); rr <= std::min(h - 1, r + dil); ++rr)
+        for (int cc = std::max(0, c - dil); cc <= std::min(w - 1, c + dil); ++cc)
+          if (last.at(cc, rr) != static_cast<std::int32_t>(k)) {
+            last.at(cc, rr) = static_cast<std::int32_t>(k);
+            covered.emplace_back(static_cast<std::int64_t>(rr) * w + cc, static_cast<int>(k));
+          }
   }
   std::sort(covered.begin(), covered.end());
   std::vector<std::uint32_t> first(static_cast<std::size_t>(w) * h + 1, 0);

@@ -292,9 +292,11 @@ std::vector<EvalObject> read_objects_json_unguarded(const fs::path& path) {
     else
       e.id = std::to_string(i);
     e.type = o.value("type", o.value("label", ""));
-    // furniture-extract's "hanging" objects (lamps) do not claim to stand on the floor.
-    if (o.contains("kind") && o["kind"].is_string())
-      e.on_floor = o["kind"].get<std::string>() != "hanging";
+    // furniture-extract's "hanging" and "lamp" objects do not claim to stand on the floor.
+    if (o.contains("kind") && o["kind"].is_string()) {
+      const auto kind = o["kind"].get<std::string>();
+      e.on_floor = kind != "hanging" && kind != "lamp";
+    }
     if (o.contains("footprint")) {
       e.footprint = polygon(o["footprint"], path, key + ".footprint");
     } else if (o.contains("obb")) {

@@ -31,6 +31,10 @@ struct ObjectParams {
   /// Pillars and columns: a wall-class component no larger than this (bounding box) that stands
   /// free in the room is listed with kind "pillar". 0: none are listed.
   double pillar_max_extent_m = 1.5;
+  /// Lamps: points hanging between the furniture band and the ceiling, over the room, with at
+  /// least 0.2 m of empty space below them; components no larger than this are listed with kind
+  /// "lamp". 0: none are listed.
+  double lamp_max_extent_m = 2.5;
   double max_vertical_gap_m = 0.3;  ///< a column's top is the highest point reachable from below
                                     ///< without an empty gap longer than this (a lamp above a table
                                     ///< is not the table's top)
@@ -45,8 +49,10 @@ struct OrientedBox {
 
 struct FurnitureObject {
   int id = 0;                      ///< 1.. in raster order of start_cell
-  std::string kind = "furniture";  ///< "furniture" (stands on or near the floor), "hanging" or
-                                   ///< "pillar"
+  /// "furniture" (stands on or near the floor), "hanging" (in the furniture band, 1 m or more
+  /// above the floor), "pillar" (a free-standing wall component) or "lamp" (above the furniture
+  /// band, below the ceiling).
+  std::string kind = "furniture";
   std::int64_t cells = 0;
   CellIndex start_cell;          ///< first cell in raster order (row 0 first)
   CellIndex min_cell, max_cell;  ///< bounding box in cells (inclusive)
@@ -59,11 +65,15 @@ struct FurnitureObject {
   bool on_floor = false;
   std::uint64_t point_count = 0;  ///< points above the footprint within [z_min, z_max]
   bool touches_wall = false;      ///< a cell is 8-adjacent to a wall cell
+  /// The object's cells when they are not those of `labels` (a lamp over a table shares its
+  /// cells with it); empty otherwise.
+  std::vector<CellIndex> own_cells;
 };
 
 struct ObjectsResult {
   std::vector<FurnitureObject> objects;
-  Grid<std::int32_t> labels;  ///< object id per cell (0: none, or below min_area)
+  Grid<std::int32_t> labels;  ///< object id per cell (0: none, or below min_area); lamps are not
+                              ///< in it (see own_cells)
 };
 
 /// Finds the objects of the furniture class. voxels supplies heights; it must cover the layout's
