@@ -1,5 +1,6 @@
 #include "objects_outputs.hpp"
 
+#include <array>
 #include <iomanip>
 #include <sstream>
 
@@ -89,16 +90,28 @@ std::vector<std::string> write_object_outputs(const fs::path& out, const layout:
   }
   if (what.picture) {
     io::RenderOptions ro;
-    ro.title = "furniture objects: " + std::to_string(res.objects.size());
+    ro.title = "objects: " + std::to_string(res.objects.size());
     for (const auto& s : map.cloud_map.scanners) ro.markers_map.emplace_back(s.x(), s.y());
+    // One colour per kind; the legend lists the kinds that occur.
+    const std::vector<std::pair<std::string, std::array<std::uint8_t, 3>>> colours = {
+        {"furniture", {170, 0, 150}},
+        {"pillar", {200, 30, 30}},
+        {"hanging", {0, 130, 200}},
+        {"lamp", {0, 170, 170}}};
+    std::vector<bool> used(colours.size(), false);
     for (const auto& o : res.objects) {
       io::Overlay ov;
       ov.points_m = o.footprint_m;
       ov.label = std::to_string(o.id);
-      ov.rgb = {170, 0, 150};
+      std::size_t k = 0;
+      while (k + 1 < colours.size() && colours[k].first != o.kind) ++k;
+      if (colours[k].first != o.kind) k = 0;
+      used[k] = true;
+      ov.rgb = colours[k].second;
       ro.overlays.push_back(ov);
     }
-    ro.legend.push_back({"object outline + id", {170, 0, 150}});
+    for (std::size_t k = 0; k < colours.size(); ++k)
+      if (used[k] || k == 0) ro.legend.push_back({colours[k].first + " (id)", colours[k].second});
     io::write_layout_png(out / "objects.png", map.layout.layout, map.geometry, ro);
     written.push_back("objects.png");
   }
