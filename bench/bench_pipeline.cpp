@@ -11,6 +11,7 @@
 #include <memory>
 #include <random>
 
+#include "indoormap/cloud/ghosts.hpp"
 #include "indoormap/cloud/level.hpp"
 #include "indoormap/cloud/load.hpp"
 #include "indoormap/cloud/voxel.hpp"
@@ -102,6 +103,36 @@ void BM_VoxelizeAndLayers(benchmark::State& st) {
   st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * pts.size()));
 }
 
+// The ghost filter on the Jacobs grid: /0 with the default ray budget (every 2nd point), /1 with
+// every point. Each iteration copies the grid first (BM_GhostsJacobsCopyOnly measures that).
+void BM_GhostsJacobs(benchmark::State& st) {
+  const auto& pts = inputs().jacobs;
+  if (skip_if_empty(st, pts) || inputs().jacobs_scanners.size() != 1) {
+    if (!pts.empty()) st.SkipWithError("Jacobs scan without exactly one scanner position");
+    return;
+  }
+  cloud::VoxelParams vp;
+  const auto g = cloud::voxelize(pts, cloud::robust_bounds(pts, vp), vp);
+  cloud::GhostParams gp;
+  if (st.range(0) == 1) gp.max_rays = pts.size();
+  std::size_t rays = 0;
+  for (auto _ : st) {
+    auto copy = g;
+    rays = cloud::remove_ghost_voxels(copy, pts, inputs().jacobs_scanners[0], gp).rays;
+    benchmark::DoNotOptimize(copy.counts.data());
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * rays));
+}
+void BM_GhostsJacobsCopyOnly(benchmark::State& st) {
+  const auto& pts = inputs().jacobs;
+  if (skip_if_empty(st, pts)) return;
+  cloud::VoxelParams vp;
+  const auto g = cloud::voxelize(pts, cloud::robust_bounds(pts, vp), vp);
+  for (auto _ : st) {
+    auto copy = g;
+    benchmark::DoNotOptimize(copy.counts.data());
+  }
+}
 // Reference: pcl::VoxelGrid with the same leaf size on the same points (conversion excluded).
 void BM_PclVoxelGrid(benchmark::State& st) {
   const auto& pts = pick(static_cast<int>(st.range(0)));
@@ -143,6 +174,8 @@ void BM_Layout2D(benchmark::State& st) {
 BENCHMARK(BM_LoadJacobs)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Level)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VoxelizeAndLayers)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GhostsJacobs)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GhostsJacobsCopyOnly)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PclVoxelGrid)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Layout2D)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();
