@@ -84,6 +84,8 @@ void visit(PipelineConfig& c, F&& f) {
   f("objects", "split_height_step_m", ob.split_height_step_m);
   f("objects", "max_vertical_gap_m", ob.max_vertical_gap_m);
   f("objects", "hanging_min_clearance_m", ob.hanging_min_clearance_m);
+  f("objects", "pillar_max_extent_m", ob.pillar_max_extent_m);
+  f("objects", "lamp_max_extent_m", ob.lamp_max_extent_m);
   f("objects", "top_percentile", ob.top_percentile);
   auto& bd = c.border;
   f("border", "dilate_full_size", bd.dilate_full_size);
@@ -278,6 +280,8 @@ void validate(const PipelineConfig& c) {
           "objects.crop_margin_m: must be in [0, 10]");
   require(ob.split_height_step_m >= 0, "objects.split_height_step_m: must be >= 0 (0: off)");
   require(ob.hanging_min_clearance_m > 0, "objects.hanging_min_clearance_m: must be > 0");
+  require(ob.pillar_max_extent_m >= 0, "objects.pillar_max_extent_m: must be >= 0");
+  require(ob.lamp_max_extent_m >= 0, "objects.lamp_max_extent_m: must be >= 0");
   require(ob.max_vertical_gap_m > 0, "objects.max_vertical_gap_m: must be > 0");
   require(ob.top_percentile >= 0 && ob.top_percentile <= 100,
           "objects.top_percentile: must be in [0, 100]");
