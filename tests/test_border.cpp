@@ -148,6 +148,10 @@ void expect_valid_chain(const border::BorderResult& r, const std::string& what) 
   EXPECT_NEAR(r.perimeter_m, border::perimeter(r.polygon_m), 1e-9);
 }
 
+std::string fmt(const Eigen::Vector2d& v) {
+  return "(" + std::to_string(v.x()) + ", " + std::to_string(v.y()) + ")";
+}
+
 // Symmetric Hausdorff distance between polygon boundaries sampled every 1 cm.
 double hausdorff(const Polygon& a, const Polygon& b) {
   auto sample = [](const Polygon& p) {
@@ -389,6 +393,71 @@ TEST(Border, AccuracyAgainstTrueWallFaces) {
             << 100 * as[as.size() / 2] << " % (worst " << 100 * worst_a << " %)\n";
 }
 
+// A rectangular room (faces x in [1, 6] m, y in [1, 4] m, walls 0.1 m) as a single scan sees it:
+// a round pillar (radius 0.3 m) stands 0.7 m in front of the north wall and hides a wedge of the
+// floor and of that wall from the scanner (unknown cells reaching the wall, 1.1 m wide there; of
+// the pillar only the lit part of its rim is seen). On the south wall a column (1.2 m wide, 0.5 m
+// deep) protrudes into the room; its three faces are seen (wall cells), its inside is not: unknown,
+// as the shadow. The polygon runs straight along the north wall across the shadow, and keeps the
+// column's notch.
+TEST(Border, ShadowBehindAPillarIsBridgedASeenColumnKeepsItsNotch) {
+  const GridGeometry geo({0.0, 0.0}, kCell, 140, 100);
+  const Polygon truth{{1.0, 1.0}, {3.8, 1.0}, {3.8, 1.5}, {5.0, 1.5},
+                      {5.0, 1.0}, {6.0, 1.0}, {6.0, 4.0}, {1.0, 4.0}};
+  cv::Mat img(geo.height(), geo.width(), CV_8U, cv::Scalar(0));
+  fill(img, offset_rectilinear(truth, 0.1), geo, static_cast<int>(Cell::kWall));
+  fill(img, offset_rectilinear(truth, -kCell), geo, static_cast<int>(Cell::kFree));
+  // The column's inside (behind its 0.1 m faces) and the wall behind it are not seen.
+  fill(img, {{3.9, 0.85}, {4.9, 0.85}, {4.9, 1.4}, {3.9, 1.4}}, geo,
+       static_cast<int>(Cell::kUnknown));
+  Grid<Cell> lay(geo.width(), geo.height());
+  for (int r = 0; r < geo.height(); ++r)
+    for (int c = 0; c < geo.width(); ++c)
+      lay.at(c, r) = static_cast<Cell>(img.at<std::uint8_t>(r, c));
+  const Eigen::Vector2d scanner(2.5, 1.8), pillar(2.5, 3.0);
+  constexpr double kRadius = 0.3, kRim = 0.1;
+  for (int r = 0; r < geo.height(); ++r)
+    for (int c = 0; c < geo.width(); ++c) {
+      const Eigen::Vector2d p = geo.center_of({c, r});
+      const Eigen::Vector2d ray = (p - scanner).normalized();
+      const double along = (pillar - scanner).dot(ray);
+      const double miss = (scanner + ray * along - pillar).norm();
+      // The ray enters the pillar more than the rim's depth before it reaches p.
+      const bool behind =
+          along > 0 && miss <= kRadius &&
+          along - std::sqrt(kRadius * kRadius - miss * miss) < (p - scanner).norm() - kRim;
+      const double to_centre = (p - pillar).norm();
+      if (to_centre <= kRadius && to_centre > kRadius - kRim && !behind)
+        lay.at(c, r) = Cell::kWall;  // the lit rim
+      else if (to_centre <= kRadius || (behind && lay.at(c, r) != Cell::kUnknown))
+        lay.at(c, r) = Cell::kUnknown;  // the pillar's inside and its shadow
+    }
+  const auto r = border::close_border(lay, geo, {scanner});
+  if (const char* dir = std::getenv("INDOORMAP_BORDER_DEBUG"))
+    debug_picture(std::string(dir) + "/shadow_room.png", lay, geo, r, truth);
+  expect_valid_chain(r, "room with a pillar's shadow");
+  EXPECT_TRUE(r.warnings.empty()) << r.warnings[0];
+  const double h = hausdorff(r.polygon_m, truth);
+  const double rel = (r.area_m2 - border::signed_area(truth)) / border::signed_area(truth);
+  EXPECT_LE(h, 0.15) << "Hausdorff to the true faces";
+  EXPECT_LE(std::abs(rel), 0.02) << "area " << r.area_m2;
+  // Along the north wall (y = 4 m) the polygon has no vertex below 3.8 m between x 1.5 and 5.5 m.
+  for (const auto& v : r.polygon_m)
+    if (v.x() > 1.5 && v.x() < 5.5 && v.y() > 2.5) EXPECT_GT(v.y(), 3.8) << fmt(v);
+  // The shadow's flanks run along free space, but they are no opening of the room.
+  EXPECT_TRUE(r.openings.empty()) << r.openings.size() << " opening(s), the first at "
+                                  << fmt(r.openings[0].a_m);
+  // The column stays outside the polygon, and its front corners are vertices. (The chain cuts
+  // the column's hollow at 45 degrees, and a face line may turn only 30 degrees from its chain
+  // edge: the flanks lean by up to 0.1 m.)
+  EXPECT_FALSE(border::contains(r.polygon_m, {4.4, 1.35}));
+  for (const Eigen::Vector2d corner : {Eigen::Vector2d(3.8, 1.5), Eigen::Vector2d(5.0, 1.5)}) {
+    double best = 1e300;
+    for (const auto& v : r.polygon_m) best = std::min(best, (v - corner).norm());
+    EXPECT_LE(best, 0.1) << "column corner " << fmt(corner);
+  }
+}
+
 TEST(Border, ScannerChoosesAmongSeveralRings) {
   // Two closed rooms side by side: each scanner picks its own room; the other is a ring.
   Grid<Cell> lay(100, 50, Cell::kUnknown);
@@ -489,11 +558,11 @@ TEST(BorderJacobs, OneClosedRoughlyRectangularPolygonWithTheDoor) {
 // with doors to a corridor), scanned from inside without tilt so the map frame is the scene frame.
 // The targets: Hausdorff <= 0.15 m to the true polygon (wall faces), area error <= 3 %,
 // every door of the room found as an opening. The figures are printed and listed in
-// docs/border-closure.md. Every scene closes and every door is found; the targets are met on
-// every scene whose layout (lib/layout) covers the room. On 4 of the 20 the layout leaves 10-23 %
-// of the room unknown (sloped ceilings; an L whose wing wall is seen too sparsely for the passage
-// rule): no border drawn on that layout can reach the missing part, and those scenes are only
-// reported.
+// docs/border-closure.md. Every scene closes, every door is found and no other opening is
+// reported; the targets are met on every scene whose layout (lib/layout) covers the room (asserted
+// per scene) and, since the polygon bridges the shadows objects in the room cast on a wall, on all
+// 20. On 2 of the 20 the layout leaves 4-5 % of the room unknown (seed 9, an L with a sloped
+// ceiling; seed 17, the shadow of a pillar): those are counted, not asserted one by one.
 //
 // INDOORMAP_BORDER_DEBUG=DIR prints the figures of every scene and writes DIR/sim_<seed>.png
 // (INDOORMAP_BORDER_DEBUG_SEED=N: only that scene; INDOORMAP_BORDER_DEBUG_BOX=x0,y0,x1,y1: a
@@ -501,6 +570,7 @@ TEST(BorderJacobs, OneClosedRoughlyRectangularPolygonWithTheDoor) {
 TEST(BorderSim, AccuracyOnSimulatedScenes) {
   int scenes = 0, closed = 0, doors = 0, doors_found = 0, within_h = 0, within_a = 0;
   int covered = 0;  // scenes whose layout leaves less than 1 % of the room unknown
+  int spurious = 0;  // openings more than 0.4 m from every door of the room
   std::vector<double> hs, as;
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     sim::Scene scene = sim::random_scene(seed, {.rooms = 1, .scanner_in_corridor = false});
@@ -559,17 +629,26 @@ TEST(BorderSim, AccuracyOnSimulatedScenes) {
                 << " vertices, " << 100 * unknown_share << " % of the room unknown"
                 << (r.warnings.empty() ? "" : "; " + r.warnings[0]) << "; edge offsets"
                 << edge_offsets_mm(room->polygon, r.polygon_m) << " mm\n";
+      for (const auto& o : r.openings)
+        std::cout << "[ sim ]   opening " << fmt(o.a_m) << " - " << fmt(o.b_m) << ", " << o.width_m
+                  << " m" << (o.is_door_candidate ? ", door candidate" : "") << "\n";
     }
     const auto& poly = room->polygon;
+    std::vector<std::uint8_t> at_door(r.openings.size(), 0);
     for (const auto& d : room->doors) {
       ++doors;
       const Eigen::Vector2d a = poly[static_cast<std::size_t>(d.edge)],
                             b = poly[(static_cast<std::size_t>(d.edge) + 1) % poly.size()];
       const Eigen::Vector2d mid = a + (b - a).normalized() * d.at_m;
       bool found = false;
-      for (const auto& o : r.openings) found |= (0.5 * (o.a_m + o.b_m) - mid).norm() < 0.4;
+      for (std::size_t i = 0; i < r.openings.size(); ++i)
+        if ((0.5 * (r.openings[i].a_m + r.openings[i].b_m) - mid).norm() < 0.4) {
+          found = true;
+          at_door[i] = 1;
+        }
       doors_found += found;
     }
+    spurious += static_cast<int>(std::count(at_door.begin(), at_door.end(), 0));
   }
   std::sort(hs.begin(), hs.end());
   std::sort(as.begin(), as.end());
@@ -578,14 +657,18 @@ TEST(BorderSim, AccuracyOnSimulatedScenes) {
             << " closed; Hausdorff <= 0.15 m: " << within_h << ", area error <= 3 %: " << within_a
             << " (layout covers the room in " << covered << "); median Hausdorff "
             << hs[hs.size() / 2] << " m, median area error " << 100 * as[as.size() / 2]
-            << " %; doors found " << doors_found << " / " << doors << "\n";
+            << " %; doors found " << doors_found << " / " << doors << ", other openings "
+            << spurious << "\n";
   EXPECT_EQ(scenes, 20);
   EXPECT_EQ(closed, 20);
   EXPECT_EQ(doors_found, doors);  // every door of every room
   EXPECT_EQ(doors, 20);
+  // Openings other than doors: before the polygon bridged shadows, the edges of the shadows of
+  // a pillar (seed 17: a 1.11 m door candidate) and of a round object (seed 9: 0.47 and 0.52 m).
+  EXPECT_EQ(spurious, 0);
   EXPECT_GE(covered, 18);  // the targets hold on each of them (above)
-  EXPECT_GE(within_h, 19);
-  EXPECT_GE(within_a, 19);
+  EXPECT_EQ(within_h, 20);  // 19 before the polygon bridged shadows (seed 17: 0.61 m)
+  EXPECT_EQ(within_a, 20);  // 19 before (seed 17: -3.3 %)
   EXPECT_LE(hs[hs.size() / 2], 0.05);
   EXPECT_LE(as[as.size() / 2], 0.02);
 }

@@ -94,6 +94,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("border", "erode_iterations", bd.erode_iterations);
   f("border", "simplify_tolerance_m", bd.simplify_tolerance_m);
   f("border", "face_snap_max_m", bd.face_snap_max_m);
+  f("border", "shadow_max_m", bd.shadow_max_m);
   f("border", "opening_search_m", bd.opening_search_m);
   f("border", "opening_min_m", bd.opening_min_m);
   f("border", "door_min_m", bd.door_min_m);

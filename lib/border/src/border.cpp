@@ -123,6 +123,7 @@ void validate(const BorderParams& p) {
   require(p.simplify_tolerance_m >= 0 && std::isfinite(p.simplify_tolerance_m),
           "simplify_tolerance_m: must be >= 0");
   require(p.face_snap_max_m >= 0 && p.face_snap_max_m <= 5, "face_snap_max_m: must be in [0, 5] m");
+  require(p.shadow_max_m >= 0 && p.shadow_max_m <= 20, "shadow_max_m: must be in [0, 20] m");
   require(p.opening_search_m >= 0 && p.opening_search_m <= 10,
           "opening_search_m: must be in [0, 10] m");
   require(p.opening_min_m >= 0 && std::isfinite(p.opening_min_m), "opening_min_m: must be >= 0");
@@ -561,6 +562,9 @@ struct FaceLine {
   double length() const { return (b - a).norm(); }
 };
 
+// Fewer face points beside an edge than this: no line is fitted (the edge has no face of its own).
+constexpr std::size_t kMinFacePoints = 4;
+
 // Total least squares line through pts; the direction is oriented along hint.
 void fit_tls(const std::vector<Eigen::Vector2d>& pts, const Eigen::Vector2d& hint, FaceLine& line) {
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
@@ -606,7 +610,7 @@ void fit_edge(const std::vector<FacePoint>& faces, double out_reach, double in_r
     offs.push_back(o);
   }
   line.inliers.clear();
-  if (cand.size() < 4) return;
+  if (cand.size() < kMinFacePoints) return;
   const double o_med = median_of(offs);
   line.u = t;
   line.c = a + n * o_med;
@@ -616,7 +620,7 @@ void fit_edge(const std::vector<FacePoint>& faces, double out_reach, double in_r
     const Eigen::Vector2d ln = line.normal();
     for (const auto& p : cand)
       if (std::abs((p - line.c).dot(ln)) <= th) in.push_back(p);
-    if (in.size() < 4) return;
+    if (in.size() < kMinFacePoints) return;
     line.inliers = in;
     fit_tls(in, t, line);
     if (line.u.dot(t) < std::cos(30.0 * M_PI / 180.0)) {  // keep the edge's direction
@@ -643,6 +647,108 @@ double angle_between(const FaceLine& l1, const FaceLine& l2) {
   return std::acos(std::clamp(l1.u.dot(l2.u), -1.0, 1.0));
 }
 
+// A detour of the chain is taken for the shadow of an object standing in the room when more than
+// this share of the cells it cuts off (between the detour and the wall line) is unknown: the
+// scanner did not see them. Architecture the chain runs round (a column, a chimney breast) shows
+// its faces and the floor beside them; a hollow column, whose inside is unknown too, is told apart
+// by its flanks (below).
+constexpr double kShadowMinUnknownShare = 0.6;
+
+// [cells] a chain cell this close to a bridged shadow's region runs along it: the region's
+// corners are vertices of the chain polygon, which Douglas-Peucker keeps within 1 cell (the
+// default simplify_tolerance_m) of the chain, plus half a cell.
+constexpr double kShadowChainTol = 1.5;
+
+double distance_to_boundary(const Polygon& poly, const Eigen::Vector2d& p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0, n = poly.size(); i < n; ++i) {
+    const Eigen::Vector2d a = poly[i], d = poly[(i + 1) % n] - a;
+    const double t =
+        d.squaredNorm() > 0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+    best = std::min(best, (a + d * t - p).norm());
+  }
+  return best;
+}
+
+// Whether the chain's detour between lines[i] and lines[i + k] (cyclic, k >= 2; both fitted) is
+// the shadow of an object standing in the room, cast on the wall behind it (a pillar 1 m before
+// a wall hides a wedge of the floor and of the wall: the wedge is unknown in the layout, and the
+// chain runs round it and the object). It is when
+//  - the two lines are one straight face: within 8 degrees, and the face points of each lie
+//    within tol (cells) of the line fitted to both, on average;
+//  - the detour runs into the room (some chain vertex lies more than tol inside that line) and
+//    not behind the wall by more than out_max (the chain's usual depth behind the face);
+//  - it is at most max_size wide along the line and deep across it;
+//  - more than kShadowMinUnknownShare of the cells between the detour and the line are unknown;
+//  - its two flanks (the first and the last line of the detour) have fewer than kMinFacePoints
+//    face points off the line: a shadow's flanks are rays grazing the object, free space against
+//    unknown, while the sides of a column are seen wall faces.
+// Returns the line through both faces' points and the region cut off, or nullopt.
+struct Shadow {
+  FaceLine joint;  // the face line across the shadow
+  Polygon region;  // the detour closed along that line (cell units)
+};
+std::optional<Shadow> shadow_bridge(const std::vector<FaceLine>& lines, std::size_t i,
+                                    std::size_t k, const Grid<Cell>& layout, double tol,
+                                    double out_max, double max_size) {
+  const std::size_t m = lines.size();
+  const FaceLine& l1 = lines[i];
+  const FaceLine& l2 = lines[(i + k) % m];
+  if (angle_between(l1, l2) > 8.0 * M_PI / 180.0) return std::nullopt;
+  FaceLine joint = l1;
+  joint.b = l2.b;
+  joint.inliers.insert(joint.inliers.end(), l2.inliers.begin(), l2.inliers.end());
+  fit_tls(joint.inliers, joint.b - joint.a, joint);
+  const Eigen::Vector2d n = joint.normal();  // towards the room
+  auto offset = [&](const Eigen::Vector2d& p) { return (p - joint.c).dot(n); };
+  auto along = [&](const Eigen::Vector2d& p) { return (p - joint.c).dot(joint.u); };
+  for (const FaceLine* l : {&l1, &l2}) {
+    double mean = 0.0;
+    for (const auto& p : l->inliers) mean += offset(p);
+    if (std::abs(mean / static_cast<double>(l->inliers.size())) > tol) return std::nullopt;
+  }
+  // The detour: the chain vertices from the end of l1 to the start of l2.
+  Polygon detour{l1.b};
+  for (std::size_t q = 1; q < k; ++q) detour.push_back(lines[(i + q) % m].b);
+  const double s0 = along(detour.front()), s1 = along(detour.back());
+  if (s1 - s0 <= 0.0 || s1 - s0 > max_size) return std::nullopt;
+  double deepest = -std::numeric_limits<double>::infinity();
+  for (const auto& v : detour) {
+    const double o = offset(v), s = along(v);
+    if (o < -out_max || o > max_size || s < s0 - out_max || s > s1 + out_max) return std::nullopt;
+    deepest = std::max(deepest, o);
+  }
+  if (deepest <= tol) return std::nullopt;
+  // Flanks: face points of the first and the last detour line that are not on the wall line.
+  for (const std::size_t q : {std::size_t{1}, k - 1}) {
+    std::size_t off = 0;
+    for (const auto& p : lines[(i + q) % m].inliers) off += std::abs(offset(p)) > tol;
+    if (off >= kMinFacePoints) return std::nullopt;
+  }
+  // The cells cut off: inside the detour closed along the line, on the room side of the line.
+  Polygon region = detour;
+  region.push_back(joint.c + joint.u * s1);
+  region.push_back(joint.c + joint.u * s0);
+  Eigen::Vector2d lo = region[0], hi = region[0];
+  for (const auto& v : region) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  std::int64_t cells = 0, unknown = 0;
+  for (int r = static_cast<int>(std::floor(lo.y())); r <= static_cast<int>(std::ceil(hi.y())); ++r)
+    for (int c = static_cast<int>(std::floor(lo.x())); c <= static_cast<int>(std::ceil(hi.x()));
+         ++c) {
+      const Eigen::Vector2d p(c, r);
+      if (offset(p) <= 0.0 || !contains(region, p)) continue;
+      ++cells;
+      unknown += !layout.contains(c, r) || layout.at(c, r) == Cell::kUnknown;
+    }
+  if (cells == 0 ||
+      static_cast<double>(unknown) <= kShadowMinUnknownShare * static_cast<double>(cells))
+    return std::nullopt;
+  return Shadow{std::move(joint), std::move(region)};
+}
+
 // The polygon from the wall faces (cell units; poly is the simplified counter-clockwise chain
 // polygon, which gives the order of the faces):
 //  1. every edge of poly is fitted to the face points beside it (fit_edge); an edge without face
@@ -650,15 +756,20 @@ double angle_between(const FaceLine& l1, const FaceLine& l2) {
 //  2. consecutive lines of one straight face are merged;
 //  3. a bump of at most max_bump cells between two lines of one face (a door recess) is bridged
 //     along that face;
-//  4. the weakest line its neighbours explain is dropped, so that the neighbours meet at their
+//  4. an inward detour of at most max_shadow cells (wide and deep) between two lines of one face
+//     round a mostly unknown region is bridged along that face: the shadow of an object standing
+//     in the room (shadow_bridge; max_shadow = 0: off); the regions cut off are added to
+//     *shadows (when given; also when the fit fails in the end);
+//  5. the weakest line its neighbours explain is dropped, so that the neighbours meet at their
 //     intersection: the corners the chain cuts (convex or concave), chamfers fitted to the two
 //     walls of a corner, wiggles of the chain at windows;
-//  5. the vertices are the intersections of consecutive lines (nearly parallel ones, a step in
+//  6. the vertices are the intersections of consecutive lines (nearly parallel ones, a step in
 //     the wall, are joined where the chain joins them).
 // nullopt when a corner strays far from the chain, or the result is not simple or not
 // counter-clockwise (the caller then falls back to snap_to_faces).
 std::optional<Polygon> fit_to_faces(const Polygon& poly, const Grid<Cell>& layout, double max_shift,
-                                    double max_bump) {
+                                    double max_bump, double max_shadow,
+                                    std::vector<Polygon>* shadows) {
   const std::size_t n0 = poly.size();
   if (n0 < 3 || max_shift <= 0) return std::nullopt;
   const double out_reach = 4.0, in_reach = max_shift + 1.5;
@@ -698,6 +809,20 @@ std::optional<Polygon> fit_to_faces(const Polygon& poly, const Grid<Cell>& layou
   };
   constexpr double kTol = 1.5;  // [cells] a face point this close to a line lies on it
   const double chamfer_max = 2.0 * max_shift + 4.0;
+  // Replaces lines[i .. i + k] (cyclic) by joint, which spans from lines[i].a to lines[i + k].b.
+  auto join_across = [&](std::size_t i, std::size_t k, FaceLine joint) {
+    const std::size_t m = lines.size();
+    std::vector<FaceLine> kept;
+    for (std::size_t q = 0; q < m; ++q) {
+      bool drop = false;
+      for (std::size_t d = 1; d <= k; ++d) drop |= q == (i + d) % m;
+      if (q == i)
+        kept.push_back(std::move(joint));
+      else if (!drop)
+        kept.push_back(std::move(lines[q]));
+    }
+    lines = std::move(kept);
+  };
   for (bool changed = true; changed && lines.size() > 3;) {
     changed = false;
     const std::size_t m = lines.size();
@@ -715,35 +840,51 @@ std::optional<Polygon> fit_to_faces(const Polygon& poly, const Grid<Cell>& layou
     if (changed) continue;
     // A bump of the chain between two lines of one face (a door recess without a lintel: the
     // chain runs round the jambs and across the door's mouth): its edges are short or have no
-    // face of their own, and the two lines are joined across it.
+    // face of their own, and the two lines are joined across it. A door recess lies behind the
+    // face (the chain crosses the door's mouth where the free space stops, a few cells inside at
+    // most); a bump that runs further into the room than the chain's largest depth behind the
+    // face (max_shift) is a column standing out of the wall, whose notch stays (or a shadow,
+    // below).
     for (std::size_t i = 0; i < m && !changed; ++i) {
       for (std::size_t k = 2; k <= 4 && k + 1 < m && !changed; ++k) {
         const std::size_t j = (i + k) % m;
         if (!supported(lines[i]) || !supported(lines[j]) || !same_face(lines[i], lines[j]))
           continue;
         double span = 0.0;
-        bool weak = true;
+        bool weak = true, inward = false;
         for (std::size_t q = 1; q < k; ++q) {
           const FaceLine& l = lines[(i + q) % m];
           span += l.length();
           weak &= !supported(l) || l.length() <= chamfer_max;
+          inward |= (l.b - lines[i].c).dot(lines[i].normal()) > max_shift;
         }
-        if (!weak || span > max_bump) continue;
-        FaceLine& l1 = lines[i];
-        l1.b = lines[j].b;
-        l1.inliers.insert(l1.inliers.end(), lines[j].inliers.begin(), lines[j].inliers.end());
-        refit(l1);
-        std::vector<FaceLine> kept;
-        for (std::size_t q = 0; q < m; ++q) {
-          bool drop = false;
-          for (std::size_t d = 1; d <= k; ++d) drop |= q == (i + d) % m;
-          if (!drop) kept.push_back(std::move(lines[q]));
-        }
-        lines = std::move(kept);
+        if (!weak || inward || span > max_bump) continue;
+        FaceLine joint = lines[i];
+        joint.b = lines[j].b;
+        joint.inliers.insert(joint.inliers.end(), lines[j].inliers.begin(), lines[j].inliers.end());
+        refit(joint);
+        join_across(i, k, std::move(joint));
         changed = true;
       }
     }
     if (changed) continue;
+    // An inward detour of the chain between two lines of one face round the shadow of an object
+    // standing in the room (shadow_bridge): the two lines are joined across it. The chain runs
+    // behind the face by up to chamfer_max.
+    if (max_shadow > 0) {
+      for (std::size_t i = 0; i < m && !changed; ++i) {
+        if (!supported(lines[i])) continue;
+        for (std::size_t k = 2; k + 3 <= m && !changed; ++k) {
+          if (!supported(lines[(i + k) % m])) continue;
+          if (auto sh = shadow_bridge(lines, i, k, layout, kTol, chamfer_max, max_shadow)) {
+            join_across(i, k, std::move(sh->joint));
+            if (shadows) shadows->push_back(std::move(sh->region));
+            changed = true;
+          }
+        }
+      }
+      if (changed) continue;
+    }
     // Drop the weakest line that its neighbours explain: an unfitted edge between two lines of
     // one face or between two lines meeting near it (a corner the chain cuts, convex or
     // concave); a fitted one whose face points (at least 80 %) lie on its neighbours' lines (a
@@ -957,22 +1098,43 @@ BorderResult close_border(const Grid<Cell>& layout, const GridGeometry& geo,
   };
   res.chain_polygon_m = to_map(poly);
   res.polygon_m = res.chain_polygon_m;
+  std::vector<Polygon> shadows;  // cell units: the shadows polygon_m runs across
   if (params.face_snap_max_m > 0) {
     // A door recess spans the door and its two jambs (each up to the largest move).
     const double max_bump = (params.door_max_m + 2.0 * params.face_snap_max_m) / geo.cell_m() + 4.0;
-    if (auto fitted = fit_to_faces(poly, layout, params.face_snap_max_m / geo.cell_m(), max_bump)) {
+    if (auto fitted = fit_to_faces(poly, layout, params.face_snap_max_m / geo.cell_m(), max_bump,
+                                   params.shadow_max_m / geo.cell_m(), &shadows)) {
       res.polygon_m = to_map(*fitted);
-    } else if (auto snapped = snap_to_faces(poly, layout, params.face_snap_max_m / geo.cell_m())) {
-      res.polygon_m = to_map(*snapped);
-      res.warnings.push_back(
-          "the polygon could not be fitted to the wall faces; its edges were moved to them");
-    } else
-      res.warnings.push_back(
-          "the polygon could not be moved to the wall faces; it follows the chain");
+    } else {
+      shadows.clear();  // the fallbacks follow the chain round every shadow
+      if (auto snapped = snap_to_faces(poly, layout, params.face_snap_max_m / geo.cell_m())) {
+        res.polygon_m = to_map(*snapped);
+        res.warnings.push_back(
+            "the polygon could not be fitted to the wall faces; its edges were moved to them");
+      } else {
+        res.warnings.push_back(
+            "the polygon could not be moved to the wall faces; it follows the chain");
+      }
+    }
   }
   res.area_m2 = signed_area(res.polygon_m);
   res.perimeter_m = perimeter(res.polygon_m);
   res.openings = find_openings(res.chain, layout, geo, params, open_below);
+  // An opening that runs along a shadow the polygon bridged (every chain cell of it on the
+  // shadow's region, within kShadowChainTol) is no gap in the room's border but the edge of what
+  // an object in the room hid from the scanner; it is dropped.
+  std::erase_if(res.openings, [&](const Opening& o) {
+    for (const auto& region : shadows) {
+      bool all = true;
+      for (std::size_t i = o.chain_first;; i = (i + 1) % res.chain.size()) {
+        const Eigen::Vector2d p(res.chain[i].col, res.chain[i].row);
+        all &= contains(region, p) || distance_to_boundary(region, p) <= kShadowChainTol;
+        if (!all || i == o.chain_last) break;
+      }
+      if (all) return true;
+    }
+    return false;
+  });
   // The morphology closes a band around any marked region, so an open scan (free space running
   // out of the data) still yields a ring; it is recognised by how much of it has no obstacle.
   // Length along the chain (not the chord) of the open runs, against the chain's length.

@@ -35,6 +35,11 @@ struct BorderParams {
   /// [m] the chain runs at the back of the wall; the polygon is fitted to the wall faces found up
   /// to this far inside the chain polygon (0 = off: polygon_m is the chain polygon).
   double face_snap_max_m = 0.3;
+  /// [m] the polygon runs straight along a wall across the shadow of an object standing in the
+  /// room (an inward detour of the chain round a mostly unknown region, both ends on one wall
+  /// face, flanks without wall faces) at most this wide along the wall and deep across it. A 0.6 m
+  /// pillar 1 m before the wall, seen from 1-2 m, hides 0.9-1.2 m of it (0 = off).
+  double shadow_max_m = 2.0;
   /// [m] a chain cell is closed when a wall or furniture cell lies within this distance of it;
   /// chain cells with none are open (the chain runs at the back of the wall, sometimes a cell off).
   double opening_search_m = 0.2;
