@@ -442,8 +442,11 @@ TEST(Border, ShadowBehindAPillarIsBridgedASeenColumnKeepsItsNotch) {
   EXPECT_LE(h, 0.15) << "Hausdorff to the true faces";
   EXPECT_LE(std::abs(rel), 0.02) << "area " << r.area_m2;
   // Along the north wall (y = 4 m) the polygon has no vertex below 3.8 m between x 1.5 and 5.5 m.
-  for (const auto& v : r.polygon_m)
-    if (v.x() > 1.5 && v.x() < 5.5 && v.y() > 2.5) EXPECT_GT(v.y(), 3.8) << fmt(v);
+  for (const auto& v : r.polygon_m) {
+    if (v.x() > 1.5 && v.x() < 5.5 && v.y() > 2.5) {
+      EXPECT_GT(v.y(), 3.8) << fmt(v);
+    }
+  }
   // The shadow's flanks run along free space, but they are no opening of the room.
   EXPECT_TRUE(r.openings.empty()) << r.openings.size() << " opening(s), the first at "
                                   << fmt(r.openings[0].a_m);
@@ -451,7 +454,7 @@ TEST(Border, ShadowBehindAPillarIsBridgedASeenColumnKeepsItsNotch) {
   // the column's hollow at 45 degrees, and a face line may turn only 30 degrees from its chain
   // edge: the flanks lean by up to 0.1 m.)
   EXPECT_FALSE(border::contains(r.polygon_m, {4.4, 1.35}));
-  for (const Eigen::Vector2d corner : {Eigen::Vector2d(3.8, 1.5), Eigen::Vector2d(5.0, 1.5)}) {
+  for (const Eigen::Vector2d& corner : {Eigen::Vector2d(3.8, 1.5), Eigen::Vector2d(5.0, 1.5)}) {
     double best = 1e300;
     for (const auto& v : r.polygon_m) best = std::min(best, (v - corner).norm());
     EXPECT_LE(best, 0.1) << "column corner " << fmt(corner);
