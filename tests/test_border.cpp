@@ -20,6 +20,7 @@
 #include "indoormap/sim/eval.hpp"
 #include "indoormap/sim/random_scene.hpp"
 #include "indoormap/sim/simulate.hpp"
+#include "objects_outputs.hpp"
 #include "test_support.hpp"
 
 using namespace indoormap;
@@ -674,4 +675,46 @@ TEST(BorderSim, AccuracyOnSimulatedScenes) {
   EXPECT_EQ(within_a, 20);  // 19 before (seed 17: -3.3 %)
   EXPECT_LE(hs[hs.size() / 2], 0.05);
   EXPECT_LE(as[as.size() / 2], 0.02);
+}
+
+// Issue 5: the border analysis's other components feed the object list (pcd-to-map's
+// objects.json). Inside the room and not already listed: added; outside, or covered by a listed
+// object (a pillar found from the layout): not.
+TEST(BorderObjects, InteriorComponentsInsideTheRoomJoinTheObjectList) {
+  border::BorderResult r;
+  r.closed = true;
+  r.polygon_m = {{0, 0}, {5, 0}, {5, 4}, {0, 4}};
+  auto interior = [](Eigen::Vector2d lo, Eigen::Vector2d hi, border::ComponentKind k) {
+    border::InteriorObject o;
+    o.min_m = lo;
+    o.max_m = hi;
+    o.cells = 10;
+    o.kind = k;
+    return o;
+  };
+  r.interior_objects = {interior({2.0, 2.0}, {2.4, 2.6}, border::ComponentKind::kRing),
+                        interior({3.0, 1.0}, {3.2, 1.2}, border::ComponentKind::kObject),
+                        interior({6.0, 1.0}, {6.5, 1.5}, border::ComponentKind::kRing),
+                        interior({1.0, 3.0}, {1.2, 3.2}, border::ComponentKind::kObject)};
+  objects::ObjectsResult objs;
+  objects::FurnitureObject pillar;
+  pillar.id = 1;
+  pillar.kind = "pillar";
+  pillar.min_m = {0.9, 2.9};
+  pillar.max_m = {1.3, 3.3};
+  objs.objects.push_back(pillar);
+  app::add_border_objects(objs, r);
+  ASSERT_EQ(objs.objects.size(), 3u);
+  EXPECT_EQ(objs.objects[1].id, 2);
+  EXPECT_EQ(objs.objects[1].kind, "column");
+  EXPECT_NEAR(objs.objects[1].area_m2, 0.4 * 0.6, 1e-9);
+  EXPECT_NEAR(objs.objects[1].box.length_m, 0.6, 1e-9);
+  EXPECT_NEAR(objs.objects[1].box.angle_deg, 90.0, 1e-9);
+  EXPECT_EQ(objs.objects[1].footprint_m.size(), 4u);
+  EXPECT_FALSE(objs.objects[1].has_height);
+  EXPECT_EQ(objs.objects[2].kind, "installation");
+  r.closed = false;  // no room polygon: nothing to place them in
+  objects::ObjectsResult none;
+  app::add_border_objects(none, r);
+  EXPECT_TRUE(none.objects.empty());
 }

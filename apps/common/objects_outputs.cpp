@@ -97,7 +97,9 @@ std::vector<std::string> write_object_outputs(const fs::path& out, const layout:
         {"furniture", {170, 0, 150}},
         {"pillar", {200, 30, 30}},
         {"hanging", {0, 130, 200}},
-        {"lamp", {0, 170, 170}}};
+        {"lamp", {0, 170, 170}},
+        {"column", {120, 60, 0}},
+        {"installation", {120, 60, 0}}};
     std::vector<bool> used(colours.size(), false);
     for (const auto& o : res.objects) {
       io::Overlay ov;
@@ -116,6 +118,35 @@ std::vector<std::string> write_object_outputs(const fs::path& out, const layout:
     written.push_back("objects.png");
   }
   return written;
+}
+
+void add_border_objects(objects::ObjectsResult& objs, const border::BorderResult& r) {
+  if (!r.closed) return;
+  for (const auto& io : r.interior_objects) {
+    const Eigen::Vector2d centre = 0.5 * (io.min_m + io.max_m);
+    if (!border::contains(r.polygon_m, centre)) continue;
+    bool covered = false;
+    for (const auto& o : objs.objects)
+      covered |= (centre.array() >= o.min_m.array()).all() && (centre.array() <= o.max_m.array()).all();
+    if (covered) continue;
+    objects::FurnitureObject o;
+    o.id = static_cast<int>(objs.objects.size()) + 1;
+    o.kind = io.kind == border::ComponentKind::kRing ? "column" : "installation";
+    o.cells = io.cells;
+    o.start_cell = io.min;
+    o.min_cell = io.min;
+    o.max_cell = io.max;
+    o.min_m = io.min_m;
+    o.max_m = io.max_m;
+    o.footprint_m = {io.min_m, {io.max_m.x(), io.min_m.y()}, io.max_m, {io.min_m.x(), io.max_m.y()}};
+    const Eigen::Vector2d size = io.max_m - io.min_m;
+    o.area_m2 = size.x() * size.y();
+    o.box.center_m = centre;
+    o.box.length_m = std::max(size.x(), size.y());
+    o.box.width_m = std::min(size.x(), size.y());
+    o.box.angle_deg = size.x() >= size.y() ? 0.0 : 90.0;
+    objs.objects.push_back(std::move(o));
+  }
 }
 
 }  // namespace indoormap::app

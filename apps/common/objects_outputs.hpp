@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "indoormap/border/border.hpp"
 #include "indoormap/layout/pipeline.hpp"
 #include "indoormap/objects/objects.hpp"
 
@@ -27,5 +28,11 @@ nlohmann::json object_json(const objects::FurnitureObject& o);
 std::vector<std::string> write_object_outputs(const std::filesystem::path& out, const layout::MapResult& map,
                                               const objects::ObjectsResult& objects,
                                               const ObjectOutputs& what);
+
+/// The border analysis's interior objects that stand inside the closed room polygon and that no
+/// listed object covers (its box's centre lies in none of their boxes) join the object list:
+/// kind "column" for a closed ring (seen all round), "installation" otherwise; footprint = the
+/// box, no heights. Nothing is added when the border is not closed.
+void add_border_objects(objects::ObjectsResult& objs, const border::BorderResult& r);
 
 }  // namespace indoormap::app

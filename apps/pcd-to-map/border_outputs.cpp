@@ -197,11 +197,7 @@ void write_border_png(const fs::path& path, const layout::MapResult& m,
 }  // namespace
 
 json write_border_outputs(const fs::path& out, const layout::MapResult& m,
-                          const border::BorderParams& params) {
-  const auto t0 = std::chrono::steady_clock::now();
-  const border::BorderResult r = border::close_border(m, params);
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+                          const border::BorderResult& r, double ms) {
 
   json openings = json::array();
   int doors = 0;

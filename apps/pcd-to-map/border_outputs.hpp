@@ -9,7 +9,8 @@
 
 namespace indoormap::app {
 
-/// Closes the room border of m and writes, atomically, into out:
+/// Writes the room border r of m (closed by border::close_border in closure_ms), atomically, into
+/// out:
 ///  - room.geojson: a FeatureCollection in map metres: the room Polygon (kind "room", area_m2,
 ///    perimeter_m; counter-clockwise, closed ring), one LineString per opening (kind "opening",
 ///    width_m, door_candidate) and the interior objects' boxes (kind "interior_object");
@@ -19,6 +20,7 @@ namespace indoormap::app {
 /// feature), a warning goes to stderr, and the returned block says closed = false with the
 /// reason. Returns the block for summary.json, whose "outputs" lists the files written.
 nlohmann::json write_border_outputs(const std::filesystem::path& out, const layout::MapResult& m,
-                                    const border::BorderParams& params);
+                                    const border::BorderResult& r, double closure_ms);
+
 
 }  // namespace indoormap::app

@@ -42,14 +42,19 @@ int run(int argc, char** argv) {
   app::PipelineRun run = app::run_pipeline(setup->cli, setup->config, /*keep_input_points=*/false);
   const auto& m = run.map;
   double objects_ms = 0.0;
-  const objects::ObjectsResult objs = app::timed_objects(m, cfg.objects, &objects_ms);
+  objects::ObjectsResult objs = app::timed_objects(m, cfg.objects, &objects_ms);
+  const auto t_border = std::chrono::steady_clock::now();
+  const border::BorderResult border_result = border::close_border(m, cfg.border);
+  const double border_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_border).count();
+  app::add_border_objects(objs, border_result);
 
   const auto t_write = std::chrono::steady_clock::now();
   std::vector<std::string> outputs = app::write_map_outputs(out, run);
   app::ObjectOutputs what;
   what.csv = what.picture = false;
   for (auto& f : app::write_object_outputs(out, m, objs, what)) outputs.push_back(f);
-  json border_block = app::write_border_outputs(out, m, cfg.border);
+  json border_block = app::write_border_outputs(out, m, border_result, border_ms);
   for (const auto& f : border_block["outputs"]) outputs.push_back(f.get<std::string>());
   const auto route = app::write_route_outputs(out, setup->cli, cfg, m.layout.layout, m.geometry);  // --start/--goal
   if (route)
