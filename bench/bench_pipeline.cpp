@@ -6,8 +6,8 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
-#include <filesystem>
 #include <algorithm>
+#include <filesystem>
 #include <memory>
 #include <random>
 
@@ -25,14 +25,15 @@ namespace {
 std::filesystem::path jacobs_dir() {
   if (const char* env = std::getenv("INDOORMAP_DATA"))
     return std::filesystem::path(env) / "jacobs-thermocolorlab";
-  return std::filesystem::path(INDOORMAP_SOURCE_DIR) / ".." / "shared" / "data" / "jacobs-thermocolorlab";
+  return std::filesystem::path(INDOORMAP_SOURCE_DIR) / ".." / "shared" / "data" /
+         "jacobs-thermocolorlab";
 }
 
 // The inputs, levelled once (voxelisation benchmarks start from a levelled cloud).
 struct Inputs {
-  std::vector<Eigen::Vector3f> big;     // 10 M synthetic points, in scan order
+  std::vector<Eigen::Vector3f> big;       // 10 M synthetic points, in scan order
   std::vector<Eigen::Vector3f> shuffled;  // the same points, shuffled
-  std::vector<Eigen::Vector3f> jacobs;  // empty when the data is absent
+  std::vector<Eigen::Vector3f> jacobs;    // empty when the data is absent
   std::vector<Eigen::Vector3f> jacobs_raw;
   std::vector<Eigen::Vector3d> jacobs_scanners;
 };
@@ -70,7 +71,8 @@ bool skip_if_empty(benchmark::State& st, const std::vector<Eigen::Vector3f>& pts
 }
 
 void BM_LoadJacobs(benchmark::State& st) {
-  if (!std::filesystem::exists(jacobs_dir())) return (void)st.SkipWithError("Jacobs data not found");
+  if (!std::filesystem::exists(jacobs_dir()))
+    return (void)st.SkipWithError("Jacobs data not found");
   std::size_t n = 0;
   for (auto _ : st) {
     auto r = cloud::load_cloud(jacobs_dir().string());

@@ -573,7 +573,7 @@ TEST(BorderJacobs, OneClosedRoughlyRectangularPolygonWithTheDoor) {
 // close-up of that box in map metres).
 TEST(BorderSim, AccuracyOnSimulatedScenes) {
   int scenes = 0, closed = 0, doors = 0, doors_found = 0, within_h = 0, within_a = 0;
-  int covered = 0;  // scenes whose layout leaves less than 1 % of the room unknown
+  int covered = 0;   // scenes whose layout leaves less than 1 % of the room unknown
   int spurious = 0;  // openings more than 0.4 m from every door of the room
   std::vector<double> hs, as;
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
@@ -670,7 +670,7 @@ TEST(BorderSim, AccuracyOnSimulatedScenes) {
   // Openings other than doors: before the polygon bridged shadows, the edges of the shadows of
   // a pillar (seed 17: a 1.11 m door candidate) and of a round object (seed 9: 0.47 and 0.52 m).
   EXPECT_EQ(spurious, 0);
-  EXPECT_GE(covered, 18);  // the targets hold on each of them (above)
+  EXPECT_GE(covered, 18);   // the targets hold on each of them (above)
   EXPECT_EQ(within_h, 20);  // 19 before the polygon bridged shadows (seed 17: 0.61 m)
   EXPECT_EQ(within_a, 20);  // 19 before (seed 17: -3.3 %)
   EXPECT_LE(hs[hs.size() / 2], 0.05);

@@ -145,7 +145,8 @@ TEST(Voxel, MatchesBruteForceOnRandomCloud) {
   long occupied = 0;
   for (auto c : g.counts) occupied += c > 0;
   EXPECT_EQ(occupied, static_cast<long>(ref.size()));
-  for (const auto& [k, n] : ref) EXPECT_EQ(g.count(std::get<0>(k), std::get<1>(k), std::get<2>(k)), n);
+  for (const auto& [k, n] : ref)
+    EXPECT_EQ(g.count(std::get<0>(k), std::get<1>(k), std::get<2>(k)), n);
   EXPECT_EQ(g.points_inside, pts.size());
 }
 
@@ -291,7 +292,9 @@ TEST(Layers, IsolatedStrayReturnsAreNotObstacles) {
   g.ny = 4;
   g.nz = 3;
   g.counts.assign(g.nx * g.ny * g.nz, 0);
-  auto at = [&](int x, int y, int z) -> std::uint16_t& { return g.counts[(z * g.ny + y) * g.nx + x]; };
+  auto at = [&](int x, int y, int z) -> std::uint16_t& {
+    return g.counts[(z * g.ny + y) * g.nx + x];
+  };
   at(0, 0, 1) = 1;  // one stray return: dropped
   at(5, 3, 0) = 1;  // a pole seen over its height: kept
   at(5, 3, 1) = 1;
@@ -318,9 +321,9 @@ TEST(Layers, MinExtentDropsThinSlabsFromTheBand) {
   g.counts.assign(g.nx * g.ny * g.nz, 0);
   auto at = [&](int x, int z) -> std::uint16_t& { return g.counts[z * g.nx + x]; };
   for (int z = 0; z < 10; ++z) at(0, z) = 5;  // a wall through the band
-  at(1, 6) = 9;                                // a lamp: one layer
-  at(1, 7) = 9;                                // ... two layers
-  at(2, 2) = 1;                                // a window's lintel and sill: 0.25 m apart
+  at(1, 6) = 9;                               // a lamp: one layer
+  at(1, 7) = 9;                               // ... two layers
+  at(2, 2) = 1;                               // a window's lintel and sill: 0.25 m apart
   at(2, 7) = 1;
   HeightBand band;
   band.lo_layer = 0;
@@ -434,7 +437,7 @@ TEST(Ghosts, EmptyInputsAndFarScannerAreHarmless) {
   // A scanner far outside the grid: rays are clipped to the grid, nothing breaks.
   EXPECT_NO_THROW(remove_ghost_voxels(g, s.points, {-500, 300, 80}));
   VoxelGrid g3 = voxelize(s.points, robust_bounds(s.points, vp), vp);
-  const auto r = remove_ghost_voxels(
-      g3, s.points, {std::nan(""), 0, 0});  // no usable scanner: nothing done
+  const auto r =
+      remove_ghost_voxels(g3, s.points, {std::nan(""), 0, 0});  // no usable scanner: nothing done
   EXPECT_FALSE(r.applied);
 }

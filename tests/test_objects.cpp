@@ -476,7 +476,7 @@ SceneScore score_scene(std::uint64_t seed, double min_area_m2) {
   PointCloud cloud{s.points, s.scanner_positions_m};
   const layout::MapResult m = layout::make_map(std::move(cloud), {});
   const auto objs = objects::extract_objects(m.layout.layout, m.geometry, m.voxels, m.layers, {},
-                                               m.cloud_map.scanners);
+                                             m.cloud_map.scanners);
   // Recall: truth items of at least min_area_m2 against every result object. Precision: result
   // objects of at least min_area_m2 against every truth item on the floor (a result matching a
   // small truth item is right, not spurious).
@@ -508,7 +508,8 @@ SceneScore score_scene(std::uint64_t seed, double min_area_m2) {
       truth_lamps.push_back({t.id, "", t.footprint, t.z_min_m, t.z_max_m, false});
   for (const auto& o : objs.objects)
     if (o.kind == "hanging" || o.kind == "lamp")
-      result_lamps.push_back({std::to_string(o.id), "", o.footprint_m, o.z_min_m, o.z_max_m, false});
+      result_lamps.push_back(
+          {std::to_string(o.id), "", o.footprint_m, o.z_min_m, o.z_max_m, false});
   const sim::ObjectScores lamp_scores = sim::evaluate_objects(truth_lamps, result_lamps, 0.5);
   if (std::getenv("IM_DEBUG_LAMPS")) {
     for (const auto& t : truth_lamps) {
@@ -516,7 +517,8 @@ SceneScore score_scene(std::uint64_t seed, double min_area_m2) {
       std::string bid = "-";
       for (const auto& o : result_lamps) {
         const auto one = sim::evaluate_objects({t}, {o}, 0.0);
-        if (!one.matches.empty() && one.matches[0].iou > best) best = one.matches[0].iou, bid = o.id;
+        if (!one.matches.empty() && one.matches[0].iou > best)
+          best = one.matches[0].iou, bid = o.id;
       }
       std::printf("  seed %llu lamp %s z %.2f-%.2f best %s %.2f\n", (unsigned long long)seed,
                   t.id.c_str(), *t.z_min_m, *t.z_max_m, bid.c_str(), best);

@@ -20,7 +20,7 @@ struct Jacobs {
 
 // Loaded and mapped once for the whole suite.
 const Jacobs* jacobs() {
-  static const Jacobs* j = [] () -> const Jacobs* {
+  static const Jacobs* j = []() -> const Jacobs* {
     auto root = test::shared_data_dir();
     if (!root || !std::filesystem::exists(*root / "jacobs-thermocolorlab")) return nullptr;
     auto* r = new Jacobs;
@@ -31,10 +31,11 @@ const Jacobs* jacobs() {
   return j;
 }
 
-#define REQUIRE_JACOBS()                                                                   \
-  const Jacobs* J = jacobs();                                                              \
-  if (!J) GTEST_SKIP() << "real data 'jacobs-thermocolorlab' not found: set INDOORMAP_DATA " \
-                          "or provide ../shared/data next to the source tree"
+#define REQUIRE_JACOBS()                                                             \
+  const Jacobs* J = jacobs();                                                        \
+  if (!J)                                                                            \
+  GTEST_SKIP() << "real data 'jacobs-thermocolorlab' not found: set INDOORMAP_DATA " \
+                  "or provide ../shared/data next to the source tree"
 
 // Number of layers within +-5 of `layer` holding at least half of that layer's occupied cells.
 int smear(const std::vector<std::int64_t>& h, std::int64_t layer) {

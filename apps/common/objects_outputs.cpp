@@ -22,11 +22,15 @@ json object_json(const objects::FurnitureObject& o) {
       {"kind", o.kind},
       {"cells", o.cells},
       {"start_cell", {o.start_cell.col, o.start_cell.row}},
-      {"bbox_cells", {{"min", {o.min_cell.col, o.min_cell.row}}, {"max", {o.max_cell.col, o.max_cell.row}}}},
+      {"bbox_cells",
+       {{"min", {o.min_cell.col, o.min_cell.row}}, {"max", {o.max_cell.col, o.max_cell.row}}}},
       {"bbox_m", {{"min", {o.min_m.x(), o.min_m.y()}}, {"max", {o.max_m.x(), o.max_m.y()}}}},
       {"area_m2", o.area_m2},
-      {"obb", {{"center", {o.box.center_m.x(), o.box.center_m.y()}}, {"width_m", o.box.width_m},
-               {"length_m", o.box.length_m}, {"angle_deg", o.box.angle_deg}}},
+      {"obb",
+       {{"center", {o.box.center_m.x(), o.box.center_m.y()}},
+        {"width_m", o.box.width_m},
+        {"length_m", o.box.length_m},
+        {"angle_deg", o.box.angle_deg}}},
       {"footprint", fp},
       {"point_count", o.point_count},
       {"touches_wall", o.touches_wall},
@@ -45,11 +49,13 @@ json object_json(const objects::FurnitureObject& o) {
 }
 
 std::vector<std::string> write_object_outputs(const fs::path& out, const layout::MapResult& map,
-                                              const objects::ObjectsResult& res, const ObjectOutputs& what) {
+                                              const objects::ObjectsResult& res,
+                                              const ObjectOutputs& what) {
   std::vector<std::string> written;
   json list = json::array();
   std::vector<std::vector<std::size_t>> crops;
-  if (what.input_points) crops = objects::crop_indices(res, map.geometry, map.cloud_map.points, what.crop_margin_m);
+  if (what.input_points)
+    crops = objects::crop_indices(res, map.geometry, map.cloud_map.points, what.crop_margin_m);
   if (what.input_points) fs::create_directories(out / "objects");
   for (std::size_t k = 0; k < res.objects.size(); ++k) {
     json j = object_json(res.objects[k]);
@@ -79,10 +85,13 @@ std::vector<std::string> write_object_outputs(const fs::path& out, const layout:
         << "id,kind,cells,area_m2,center_x_m,center_y_m,length_m,width_m,angle_deg,z_min_m,z_max_m,"
            "point_count,touches_wall\n";
     for (const auto& o : res.objects) {
-      csv << o.id << ',' << o.kind << ',' << o.cells << ',' << o.area_m2 << ',' << o.box.center_m.x() << ','
-          << o.box.center_m.y() << ',' << o.box.length_m << ',' << o.box.width_m << ',' << o.box.angle_deg << ',';
-      if (o.has_height) csv << o.z_min_m << ',' << o.z_max_m;
-      else csv << ',';
+      csv << o.id << ',' << o.kind << ',' << o.cells << ',' << o.area_m2 << ','
+          << o.box.center_m.x() << ',' << o.box.center_m.y() << ',' << o.box.length_m << ','
+          << o.box.width_m << ',' << o.box.angle_deg << ',';
+      if (o.has_height)
+        csv << o.z_min_m << ',' << o.z_max_m;
+      else
+        csv << ',';
       csv << ',' << o.point_count << ',' << (o.touches_wall ? "true" : "false") << '\n';
     }
     write_file_atomic(out / "objects.csv", csv.str());
@@ -94,12 +103,8 @@ std::vector<std::string> write_object_outputs(const fs::path& out, const layout:
     for (const auto& s : map.cloud_map.scanners) ro.markers_map.emplace_back(s.x(), s.y());
     // One colour per kind; the legend lists the kinds that occur.
     const std::vector<std::pair<std::string, std::array<std::uint8_t, 3>>> colours = {
-        {"furniture", {170, 0, 150}},
-        {"pillar", {200, 30, 30}},
-        {"hanging", {0, 130, 200}},
-        {"lamp", {0, 170, 170}},
-        {"column", {120, 60, 0}},
-        {"installation", {120, 60, 0}}};
+        {"furniture", {170, 0, 150}}, {"pillar", {200, 30, 30}}, {"hanging", {0, 130, 200}},
+        {"lamp", {0, 170, 170}},      {"column", {120, 60, 0}},  {"installation", {120, 60, 0}}};
     std::vector<bool> used(colours.size(), false);
     for (const auto& o : res.objects) {
       io::Overlay ov;
@@ -127,7 +132,8 @@ void add_border_objects(objects::ObjectsResult& objs, const border::BorderResult
     if (!border::contains(r.polygon_m, centre)) continue;
     bool covered = false;
     for (const auto& o : objs.objects)
-      covered |= (centre.array() >= o.min_m.array()).all() && (centre.array() <= o.max_m.array()).all();
+      covered |=
+          (centre.array() >= o.min_m.array()).all() && (centre.array() <= o.max_m.array()).all();
     if (covered) continue;
     objects::FurnitureObject o;
     o.id = static_cast<int>(objs.objects.size()) + 1;
@@ -138,7 +144,8 @@ void add_border_objects(objects::ObjectsResult& objs, const border::BorderResult
     o.max_cell = io.max;
     o.min_m = io.min_m;
     o.max_m = io.max_m;
-    o.footprint_m = {io.min_m, {io.max_m.x(), io.min_m.y()}, io.max_m, {io.min_m.x(), io.max_m.y()}};
+    o.footprint_m = {
+        io.min_m, {io.max_m.x(), io.min_m.y()}, io.max_m, {io.min_m.x(), io.max_m.y()}};
     const Eigen::Vector2d size = io.max_m - io.min_m;
     o.area_m2 = size.x() * size.y();
     o.box.center_m = centre;

@@ -25,7 +25,8 @@ struct ObjectOutputs {
 nlohmann::json object_json(const objects::FurnitureObject& o);
 
 /// Writes the chosen outputs into out (atomically, each) and returns the list of files written.
-std::vector<std::string> write_object_outputs(const std::filesystem::path& out, const layout::MapResult& map,
+std::vector<std::string> write_object_outputs(const std::filesystem::path& out,
+                                              const layout::MapResult& map,
                                               const objects::ObjectsResult& objects,
                                               const ObjectOutputs& what);
 

@@ -198,7 +198,6 @@ void write_border_png(const fs::path& path, const layout::MapResult& m,
 
 json write_border_outputs(const fs::path& out, const layout::MapResult& m,
                           const border::BorderResult& r, double ms) {
-
   json openings = json::array();
   int doors = 0;
   for (const auto& o : r.openings) {

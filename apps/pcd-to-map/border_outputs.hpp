@@ -22,5 +22,4 @@ namespace indoormap::app {
 nlohmann::json write_border_outputs(const std::filesystem::path& out, const layout::MapResult& m,
                                     const border::BorderResult& r, double closure_ms);
 
-
 }  // namespace indoormap::app

@@ -30,7 +30,8 @@ int run(int argc, char** argv) {
       "  pcd-to-map scan.xyz --unit mm --up-axis y --scanner 0,0,1.5 -o out/scan\n"
       "  pcd-to-map --print-config > my.yaml; pcd-to-map -c my.yaml room.ply -o out\n"
       "  pcd-to-map clouds/office/cloud.pcd --start 1,1,0 --goal 4,3 -o out   # adds a route\n"
-      "Exit codes: 0 done, 2 bad usage or bad input, 3 no route (with --start/--goal), 1 other failure.");
+      "Exit codes: 0 done, 2 bad usage or bad input, 3 no route (with --start/--goal), 1 other "
+      "failure.");
   app::PipelineCli cli;
   app::add_pipeline_options(cli_app, cli);
   int code = 0;
@@ -46,7 +47,8 @@ int run(int argc, char** argv) {
   const auto t_border = std::chrono::steady_clock::now();
   const border::BorderResult border_result = border::close_border(m, cfg.border);
   const double border_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_border).count();
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_border)
+          .count();
   app::add_border_objects(objs, border_result);
 
   const auto t_write = std::chrono::steady_clock::now();
@@ -56,9 +58,11 @@ int run(int argc, char** argv) {
   for (auto& f : app::write_object_outputs(out, m, objs, what)) outputs.push_back(f);
   json border_block = app::write_border_outputs(out, m, border_result, border_ms);
   for (const auto& f : border_block["outputs"]) outputs.push_back(f.get<std::string>());
-  const auto route = app::write_route_outputs(out, setup->cli, cfg, m.layout.layout, m.geometry);  // --start/--goal
+  const auto route = app::write_route_outputs(out, setup->cli, cfg, m.layout.layout,
+                                              m.geometry);  // --start/--goal
   if (route)
-    for (const auto& f : route->summary.value("outputs", json::array())) outputs.push_back(f.get<std::string>());
+    for (const auto& f : route->summary.value("outputs", json::array()))
+      outputs.push_back(f.get<std::string>());
 
   json summary = app::summary_json("pcd-to-map", run, cfg);
   summary["border"] = border_block;

@@ -15,8 +15,8 @@ GhostResult remove_ghost_voxels(VoxelGrid& g, const std::vector<Eigen::Vector3f>
   const std::int64_t n[3] = {g.nx, g.ny, g.nz};
   const std::int64_t nxy = g.nx * g.ny;
   std::vector<std::uint8_t> passes(g.counts.size(), 0);  // saturating
-  const std::size_t stride =
-      std::max<std::size_t>(1, (points.size() + params.max_rays - 1) / std::max<std::size_t>(params.max_rays, 1));
+  const std::size_t stride = std::max<std::size_t>(
+      1, (points.size() + params.max_rays - 1) / std::max<std::size_t>(params.max_rays, 1));
   const Eigen::Vector3d s = (scanner - g.origin_m) / g.cell_m;  // voxel units
   const double skip = params.end_skip_m / g.cell_m;
   const std::uint16_t* counts = g.counts.data();
@@ -71,7 +71,8 @@ GhostResult remove_ghost_voxels(VoxelGrid& g, const std::vector<Eigen::Vector3f>
     while (t < t1) {
       if (counts[idx] && (v[2] <= lo_layer || v[2] >= hi_layer) && passes[idx] != 0xFF)
         ++passes[idx];
-      const int a = t_max[0] < t_max[1] ? (t_max[0] < t_max[2] ? 0 : 2) : (t_max[1] < t_max[2] ? 1 : 2);
+      const int a =
+          t_max[0] < t_max[1] ? (t_max[0] < t_max[2] ? 0 : 2) : (t_max[1] < t_max[2] ? 1 : 2);
       t = t_max[a];
       t_max[a] += t_delta[a];
       v[a] += step[a];

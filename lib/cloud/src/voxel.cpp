@@ -41,7 +41,8 @@ std::pair<double, double> gap_limited_range(std::vector<float>& v, double gap) {
     return last;
   };
   const std::int64_t lo = walk(-1), hi = walk(+1);
-  return {median + static_cast<double>(lo - half) * bin, median + static_cast<double>(hi - half + 1) * bin};
+  return {median + static_cast<double>(lo - half) * bin,
+          median + static_cast<double>(hi - half + 1) * bin};
 }
 
 }  // namespace
@@ -163,8 +164,8 @@ HeightBand make_band(const VoxelGrid& g, double lo, double hi) {
   b.lo_m = lo;
   b.hi_m = hi;
   b.lo_layer = std::max<std::int64_t>(0, layer_of(g, lo + 1e-9));
-  b.hi_layer = std::min<std::int64_t>(g.nz - 1, static_cast<std::int64_t>(std::ceil(
-                                                    (hi - g.origin_m.z()) / g.cell_m - 1e-9)) - 1);
+  b.hi_layer = std::min<std::int64_t>(
+      g.nz - 1, static_cast<std::int64_t>(std::ceil((hi - g.origin_m.z()) / g.cell_m - 1e-9)) - 1);
   return b;
 }
 
@@ -177,13 +178,14 @@ std::string fmt_m(double v) {
 
 // The first layer from min_layer up whose count exceeds factor x the median count of the wall
 // layers between 0.5 m above the floor and min_layer: where a sloped ceiling begins.
-std::optional<std::int64_t> ceiling_onset(const std::vector<std::int64_t>& h, std::int64_t floor_layer,
-                                          std::int64_t min_layer, std::int64_t last, double cell_m,
-                                          double factor) {
+std::optional<std::int64_t> ceiling_onset(const std::vector<std::int64_t>& h,
+                                          std::int64_t floor_layer, std::int64_t min_layer,
+                                          std::int64_t last, double cell_m, double factor) {
   const std::int64_t lo = floor_layer + static_cast<std::int64_t>(std::ceil(0.5 / cell_m));
   if (min_layer - lo < 3 || min_layer > last) return std::nullopt;
   std::vector<std::int64_t> walls(h.begin() + lo, h.begin() + min_layer);
-  std::nth_element(walls.begin(), walls.begin() + static_cast<std::ptrdiff_t>(walls.size() / 2), walls.end());
+  std::nth_element(walls.begin(), walls.begin() + static_cast<std::ptrdiff_t>(walls.size() / 2),
+                   walls.end());
   const double baseline = static_cast<double>(walls[walls.size() / 2]);
   if (baseline <= 0) return std::nullopt;
   for (std::int64_t z = min_layer; z <= last; ++z)
@@ -279,7 +281,8 @@ LayerAnalysis analyse_layers(const VoxelGrid& g, const LayerParams& p) {
   if (wall_hi <= wall_lo) wall_hi = wall_lo + g.cell_m;
   // Objects hanging lower than the wall band (lamps) are not furniture: the band stops at
   // furniture_max_height_m above the floor.
-  const double furn_hi = p.furniture_band_hi_m.value_or(std::min(wall_lo, a.floor_z_m + p.furniture_max_height_m));
+  const double furn_hi =
+      p.furniture_band_hi_m.value_or(std::min(wall_lo, a.floor_z_m + p.furniture_max_height_m));
   a.wall_band = make_band(g, wall_lo, wall_hi);
   a.furniture_band = make_band(g, furn_lo, furn_hi);
   return a;

@@ -26,8 +26,10 @@ MapResult make_map(PointCloud cloud, const MapParams& params) {
   MapResult r;
   Stopwatch sw;
   r.level = cloud::estimate_level(cloud.points, params.level);
-  if (r.level.levelled) cloud::rotate(cloud, r.level.map_from_input);
-  else if (params.level.enabled) r.warnings.push_back("not levelled: " + r.level.note);
+  if (r.level.levelled)
+    cloud::rotate(cloud, r.level.map_from_input);
+  else if (params.level.enabled)
+    r.warnings.push_back("not levelled: " + r.level.note);
   r.timings.push_back({"level", sw.lap_ms()});
 
   r.bounds = cloud::robust_bounds(cloud.points, params.voxel);
@@ -59,8 +61,10 @@ MapResult make_map(PointCloud cloud, const MapParams& params) {
   below.hi_layer = wb.lo_layer - 1;
   below.lo_layer = std::max<std::int64_t>(
       r.layers.furniture_band.lo_layer,
-      below.hi_layer - static_cast<std::int64_t>(std::ceil(params.layout.hanging_gap_m / r.voxels.cell_m)) + 1);
-  auto support = cloud::project_band(r.voxels, below, lp.min_points_per_voxel, lp.isolated_min_points);
+      below.hi_layer -
+          static_cast<std::int64_t>(std::ceil(params.layout.hanging_gap_m / r.voxels.cell_m)) + 1);
+  auto support =
+      cloud::project_band(r.voxels, below, lp.min_points_per_voxel, lp.isolated_min_points);
   // So does a column standing through most of the wall band: the wall above a window, where
   // nothing is below it, is a wall, not a lamp.
   const auto tall = cloud::project_band(

@@ -1,13 +1,13 @@
 #include "indoormap/objects/objects.hpp"
 
+#include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <map>
-#include <optional>
-#include <Eigen/Cholesky>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 
 #include "indoormap/core/errors.hpp"
 
@@ -110,6 +110,39 @@ OrientedBox min_area_box(const std::vector<Eigen::Vector2d>& pts) {
   return b;
 }
 
+// The four corners of a cell (map metres), for minimum-area rectangles of cell sets.
+void add_cell_corners(const GridGeometry& geo, CellIndex c, std::vector<Eigen::Vector2d>& out) {
+  for (const auto& d : {Eigen::Vector2d(-0.5, -0.5), Eigen::Vector2d(0.5, -0.5),
+                        Eigen::Vector2d(0.5, 0.5), Eigen::Vector2d(-0.5, 0.5)})
+    out.push_back(geo.center_of(c) + d * geo.cell_m());
+}
+
+// The box's axes: along its length, and across.
+std::pair<Eigen::Vector2d, Eigen::Vector2d> box_axes(const OrientedBox& b) {
+  const Eigen::Vector2d u(std::cos(b.angle_deg * M_PI / 180), std::sin(b.angle_deg * M_PI / 180));
+  return {u, Eigen::Vector2d(-u.y(), u.x())};
+}
+
+// The box as a counter-clockwise polygon.
+std::vector<Eigen::Vector2d> box_polygon(const OrientedBox& b) {
+  const auto [u, v] = box_axes(b);
+  std::vector<Eigen::Vector2d> poly;
+  for (const auto& [su, sv] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
+    poly.push_back(b.center_m + su * 0.5 * b.length_m * u + sv * 0.5 * b.width_m * v);
+  return poly;
+}
+
+// Twice the signed area (counter-clockwise positive).
+double signed_area2(const std::vector<Eigen::Vector2d>& poly) {
+  double a2 = 0.0;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const auto& a = poly[i];
+    const auto& b = poly[(i + 1) % poly.size()];
+    a2 += a.x() * b.y() - b.x() * a.y();
+  }
+  return a2;
+}
+
 // Outline of the cells of one label, traced on a 4x upsampled mask eroded by one pixel: it runs
 // 1/8 cell outside the centres of the boundary cells. A boundary cell holds the object's surface
 // somewhere inside it, so its centre is the unbiased estimate; the cell edges would make every
@@ -142,13 +175,7 @@ std::vector<Eigen::Vector2d> outline(const Grid<std::int32_t>& labels, int id, C
     poly.emplace_back(geo.origin_m().x() + col * geo.cell_m(),
                       geo.origin_m().y() + row * geo.cell_m());
   }
-  double area2 = 0.0;
-  for (std::size_t i = 0; i < poly.size(); ++i) {
-    const auto& a = poly[i];
-    const auto& b = poly[(i + 1) % poly.size()];
-    area2 += a.x() * b.y() - b.x() * a.y();
-  }
-  if (area2 < 0) std::reverse(poly.begin(), poly.end());
+  if (signed_area2(poly) < 0) std::reverse(poly.begin(), poly.end());
   return poly;
 }
 
@@ -259,7 +286,8 @@ void add_pillars(const Grid<Cell>& layout, const GridGeometry& geo, const cloud:
   const double cell = geo.cell_m();
   for (int lab = 1; lab < n; ++lab) {
     const int x0 = stats.at<int>(lab, cv::CC_STAT_LEFT), y0 = stats.at<int>(lab, cv::CC_STAT_TOP);
-    const int bw = stats.at<int>(lab, cv::CC_STAT_WIDTH), bh = stats.at<int>(lab, cv::CC_STAT_HEIGHT);
+    const int bw = stats.at<int>(lab, cv::CC_STAT_WIDTH),
+              bh = stats.at<int>(lab, cv::CC_STAT_HEIGHT);
     if (std::max(bw, bh) * cell > params.pillar_max_extent_m) continue;
     if (x0 == 0 || y0 == 0 || x0 + bw == w || y0 + bh == h) continue;
     // The ring of cells around the component: a piece of the outer wall (between a door and a
@@ -304,14 +332,10 @@ void add_pillars(const Grid<Cell>& layout, const GridGeometry& geo, const cloud:
     std::vector<Eigen::Vector2d> centres, corners;
     for (const auto& c : cells) {
       centres.push_back(geo.center_of(c));
-      for (const auto& d : {Eigen::Vector2d(-0.5, -0.5), Eigen::Vector2d(0.5, -0.5),
-                            Eigen::Vector2d(0.5, 0.5), Eigen::Vector2d(-0.5, 0.5)})
-        corners.push_back(geo.center_of(c) + d * cell);
+      add_cell_corners(geo, c, corners);
     }
     const OrientedBox rect = min_area_box(corners);
-    const Eigen::Vector2d ru(std::cos(rect.angle_deg * M_PI / 180),
-                             std::sin(rect.angle_deg * M_PI / 180));
-    const Eigen::Vector2d rv(-ru.y(), ru.x());
+    const auto [ru, rv] = box_axes(rect);
     std::size_t on_border = 0;
     for (const auto& p : centres) {
       const Eigen::Vector2d q = p - rect.center_m;
@@ -330,21 +354,14 @@ void add_pillars(const Grid<Cell>& layout, const GridGeometry& geo, const cloud:
       constexpr int kVertices = 32;
       for (int k = 0; k < kVertices; ++k) {
         const double a = 2.0 * M_PI * k / kVertices;
-        o.footprint_m.push_back(circle->center + radius * Eigen::Vector2d(std::cos(a), std::sin(a)));
+        o.footprint_m.push_back(circle->center +
+                                radius * Eigen::Vector2d(std::cos(a), std::sin(a)));
       }
     } else {
-      for (const auto& [su, sv] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
-        o.footprint_m.push_back(rect.center_m + su * 0.5 * rect.length_m * ru +
-                                sv * 0.5 * rect.width_m * rv);
+      o.footprint_m = box_polygon(rect);
     }
     o.box = min_area_box(o.footprint_m);
-    double area2 = 0.0;
-    for (std::size_t i = 0; i < o.footprint_m.size(); ++i) {
-      const auto& a = o.footprint_m[i];
-      const auto& b = o.footprint_m[(i + 1) % o.footprint_m.size()];
-      area2 += a.x() * b.y() - b.x() * a.y();
-    }
-    o.area_m2 = std::abs(area2) / 2;
+    o.area_m2 = std::abs(signed_area2(o.footprint_m)) / 2;
     o.min_m = o.footprint_m.front();
     o.max_m = o.footprint_m.front();
     for (const auto& p : o.footprint_m) {
@@ -373,12 +390,11 @@ void add_pillars(const Grid<Cell>& layout, const GridGeometry& geo, const cloud:
 
 // Lamps and other ceiling fixtures: points hanging above the furniture band and below the
 // ceiling, over the room (known cells more than kWallFaceCells from a wall), with empty space
-// between them and what stands below. The wall band's projection leaves them out (thin slabs, not walls) and
-// the furniture band ends below them, so no other class holds them. Their cells may lie over a
-// table's: they are listed with their own cell list, not in `labels`.
+// between them and what stands below. The wall band's projection leaves them out (thin slabs, not
+// walls) and the furniture band ends below them, so no other class holds them. Their cells may lie
+// over a table's: they are listed with their own cell list, not in `labels`.
 void add_lamps(const Grid<Cell>& layout, const GridGeometry& geo, const cloud::VoxelGrid& voxels,
-               const cloud::LayerAnalysis& layers, const ObjectParams& params,
-               ObjectsResult& res) {
+               const cloud::LayerAnalysis& layers, const ObjectParams& params, ObjectsResult& res) {
   const int w = layout.width, h = layout.height;
   if (layers.furniture_band.hi_layer < layers.furniture_band.lo_layer) return;  // no bands
   const std::int64_t z_lo = std::max<std::int64_t>(layers.furniture_band.hi_layer + 1, 0);
@@ -452,7 +468,8 @@ void add_lamps(const Grid<Cell>& layout, const GridGeometry& geo, const cloud::V
   const double cell = geo.cell_m();
   for (int lab = 1; lab < n; ++lab) {
     const int x0 = stats.at<int>(lab, cv::CC_STAT_LEFT), y0 = stats.at<int>(lab, cv::CC_STAT_TOP);
-    const int bw = stats.at<int>(lab, cv::CC_STAT_WIDTH), bh = stats.at<int>(lab, cv::CC_STAT_HEIGHT);
+    const int bw = stats.at<int>(lab, cv::CC_STAT_WIDTH),
+              bh = stats.at<int>(lab, cv::CC_STAT_HEIGHT);
     const int area = stats.at<int>(lab, cv::CC_STAT_AREA);
     if (area * cell * cell < params.min_area_m2) continue;
     if (std::max(bw, bh) * cell > params.lamp_max_extent_m) continue;
@@ -475,9 +492,7 @@ void add_lamps(const Grid<Cell>& layout, const GridGeometry& geo, const cloud::V
           o.point_count += voxels.count(c, r, z);
           per_layer[z] += voxels.count(c, r, z);
         }
-        for (const auto& d : {Eigen::Vector2d(-0.5, -0.5), Eigen::Vector2d(0.5, -0.5),
-                              Eigen::Vector2d(0.5, 0.5), Eigen::Vector2d(-0.5, 0.5)})
-          corners.push_back(geo.center_of({c, r}) + d * cell);
+        add_cell_corners(geo, {c, r}, corners);
       }
     // The cells are where the lamp's underside was seen: its outline is their minimum-area
     // rectangle, drawn through the boundary cells' centres as for the furniture (a lamp 1.2 m
@@ -485,10 +500,7 @@ void add_lamps(const Grid<Cell>& layout, const GridGeometry& geo, const cloud::V
     OrientedBox b = min_area_box(corners);
     b.length_m = std::max(cell, b.length_m - cell);
     b.width_m = std::max(cell, b.width_m - cell);
-    const Eigen::Vector2d u(std::cos(b.angle_deg * M_PI / 180), std::sin(b.angle_deg * M_PI / 180));
-    const Eigen::Vector2d v(-u.y(), u.x());
-    for (const auto& [su, sv] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
-      o.footprint_m.push_back(b.center_m + su * 0.5 * b.length_m * u + sv * 0.5 * b.width_m * v);
+    o.footprint_m = box_polygon(b);
     o.box = b;
     o.area_m2 = b.length_m * b.width_m;
     o.min_m = geo.origin_m() + Eigen::Vector2d(x0, y0) * cell;

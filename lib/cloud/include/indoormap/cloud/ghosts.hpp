@@ -23,12 +23,12 @@ struct GhostParams {
   /// grazes a horizontal surface (a table top seen from afar) runs through the surface's own
   /// layer before it lands, and would take the top for a ghost.
   int min_layer_offset = 4;
-  double end_skip_m = 0.1;            ///< the last stretch of every ray (its own surface) counts not
-  std::size_t max_rays = 500'000;   ///< at most this many rays are traced (every k-th point)
+  double end_skip_m = 0.1;         ///< the last stretch of every ray (its own surface) counts not
+  std::size_t max_rays = 500'000;  ///< at most this many rays are traced (every k-th point)
 };
 
 struct GhostResult {
-  bool applied = false;              ///< the filter ran (enabled, one scanner known)
+  bool applied = false;  ///< the filter ran (enabled, one scanner known)
   std::int64_t voxels_removed = 0;
   std::uint64_t points_removed = 0;  ///< points in the removed voxels
   std::size_t rays = 0;              ///< rays traced

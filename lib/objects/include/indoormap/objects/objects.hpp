@@ -48,7 +48,7 @@ struct OrientedBox {
 };
 
 struct FurnitureObject {
-  int id = 0;                      ///< 1.. in raster order of start_cell
+  int id = 0;  ///< 1.. in raster order of start_cell
   /// "furniture" (stands on or near the floor), "hanging" (in the furniture band, 1 m or more
   /// above the floor), "pillar" (a free-standing wall component) or "lamp" (above the furniture
   /// band, below the ceiling).
