@@ -80,6 +80,10 @@ struct ObjectsResult {
 /// grid (same 2D geometry); heights are searched between the floor and the ceiling layers of
 /// `layers`. Furniture cells within three cells of a wall whose column reaches the wall band hold
 /// the wall's face, not the object: they take the height of the nearest other cell.
+/// Furniture cells without data whose floor was seen are no part of any object; with the
+/// scanner positions (map frame), neither are those where the neighbouring object's top would
+/// have been in a scanner's line of sight (docs/furniture-extract.md). Pillars and lamps follow
+/// the furniture objects in the list (params.pillar_max_extent_m, params.lamp_max_extent_m).
 ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geometry,
                               const cloud::VoxelGrid& voxels, const cloud::LayerAnalysis& layers,
                               const ObjectParams& params = {},
