@@ -684,10 +684,13 @@ TEST(BorderObjects, InteriorComponentsInsideTheRoomJoinTheObjectList) {
   border::BorderResult r;
   r.closed = true;
   r.polygon_m = {{0, 0}, {5, 0}, {5, 4}, {0, 4}};
-  auto interior = [](Eigen::Vector2d lo, Eigen::Vector2d hi, border::ComponentKind k) {
+  const GridGeometry geo({0.0, 0.0}, 0.1, 80, 50);  // 0.1 m cells from the map origin
+  auto interior = [&](Eigen::Vector2d lo, Eigen::Vector2d hi, border::ComponentKind k) {
     border::InteriorObject o;
     o.min_m = lo;
     o.max_m = hi;
+    o.min = geo.cell_of(lo + Eigen::Vector2d(0.05, 0.05));
+    o.max = geo.cell_of(hi - Eigen::Vector2d(0.05, 0.05));
     o.cells = 10;
     o.kind = k;
     return o;
@@ -713,6 +716,23 @@ TEST(BorderObjects, InteriorComponentsInsideTheRoomJoinTheObjectList) {
   EXPECT_EQ(objs.objects[1].footprint_m.size(), 4u);
   EXPECT_FALSE(objs.objects[1].has_height);
   EXPECT_EQ(objs.objects[2].kind, "installation");
+  // Its crop is its box at every height: on a hand-made cloud, exactly the points in the box.
+  EXPECT_EQ(objs.objects[1].own_cells.size(), 4u * 6u);
+  std::vector<Eigen::Vector3f> pts;
+  std::vector<std::size_t> want;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> ux(0.0f, 7.9f), uy(0.0f, 4.9f), uz(-0.5f, 3.5f);
+  for (int i = 0; i < 20000; ++i) {
+    const Eigen::Vector3f p(ux(rng), uy(rng), uz(rng));
+    const CellIndex c = geo.cell_of({p.x(), p.y()});
+    if (c.col >= 20 && c.col <= 23 && c.row >= 20 && c.row <= 25) want.push_back(pts.size());
+    pts.push_back(p);
+  }
+  objs.labels = Grid<std::int32_t>(geo.width(), geo.height(), 0);  // the pillar: no cells here
+  const auto crops = objects::crop_indices(objs, geo, pts, 0.0);
+  ASSERT_EQ(crops.size(), 3u);
+  EXPECT_EQ(crops[1], want);
+  EXPECT_GT(want.size(), 100u);
   r.closed = false;  // no room polygon: nothing to place them in
   objects::ObjectsResult none;
   app::add_border_objects(none, r);

@@ -152,6 +152,9 @@ void add_border_objects(objects::ObjectsResult& objs, const border::BorderResult
     o.box.length_m = std::max(size.x(), size.y());
     o.box.width_m = std::min(size.x(), size.y());
     o.box.angle_deg = size.x() >= size.y() ? 0.0 : 90.0;
+    // The border analysis keeps no per-cell mask: the crop region is the bounding box.
+    for (int row = io.min.row; row <= io.max.row; ++row)
+      for (int col = io.min.col; col <= io.max.col; ++col) o.own_cells.push_back({col, row});
     objs.objects.push_back(std::move(o));
   }
 }

@@ -33,7 +33,8 @@ std::vector<std::string> write_object_outputs(const std::filesystem::path& out,
 /// The border analysis's interior objects that stand inside the closed room polygon and that no
 /// listed object covers (its box's centre lies in none of their boxes) join the object list:
 /// kind "column" for a closed ring (seen all round), "installation" otherwise; footprint = the
-/// box, no heights. Nothing is added when the border is not closed.
+/// box, no heights; own_cells = the box's cells, so a crop holds the box's points at every
+/// height. Nothing is added when the border is not closed.
 void add_border_objects(objects::ObjectsResult& objs, const border::BorderResult& r);
 
 }  // namespace indoormap::app

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "cli.hpp"
+#include "indoormap/border/border.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/io/map_io.hpp"
@@ -29,7 +30,8 @@ int run(int argc, char** argv) {
       "  furniture-extract room.ply -c my.yaml -o out   # objects.min_area_m2, crop_margin_m, ...\n"
       "Outputs: objects.json, objects.csv, objects.png, objects/object_<id>.pcd (input frame),\n"
       "layout.pgm, map.yaml, summary.json.\n"
-      "Exit codes: 0 done (also with no object: an empty list), 2 bad usage or bad input, 1 other failure.");
+      "Exit codes: 0 done (also with no object: an empty list), 2 bad usage or bad input, 1 other "
+      "failure.");
   app::PipelineCli cli;
   app::add_pipeline_options(cli_app, cli);
   int code = 0;
@@ -41,7 +43,15 @@ int run(int argc, char** argv) {
   app::PipelineRun run = app::run_pipeline(setup->cli, setup->config, /*keep_input_points=*/true);
   const auto& m = run.map;
   double objects_ms = 0.0;
-  const objects::ObjectsResult objs = app::timed_objects(m, cfg.objects, &objects_ms);
+  objects::ObjectsResult objs = app::timed_objects(m, cfg.objects, &objects_ms);
+  // The room border's own small objects (columns, installations) are listed too.
+  const auto t_border = std::chrono::steady_clock::now();
+  const border::BorderResult border_result = border::close_border(m, cfg.border);
+  const double border_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_border)
+          .count();
+  const std::size_t furniture_count = objs.objects.size();
+  app::add_border_objects(objs, border_result);
 
   const auto t_write = std::chrono::steady_clock::now();
   std::vector<std::string> outputs = app::write_map_outputs(out, run);
@@ -51,8 +61,12 @@ int run(int argc, char** argv) {
   for (auto& f : app::write_object_outputs(out, m, objs, what)) outputs.push_back(f);
 
   json summary = app::summary_json("furniture-extract", run, cfg);
-  summary["objects"] = {{"count", objs.objects.size()}, {"file", "objects.json"}};
+  summary["objects"] = {{"count", objs.objects.size()},
+                        {"from_border", objs.objects.size() - furniture_count},
+                        {"file", "objects.json"}};
+  summary["border"] = {{"closed", border_result.closed}, {"reason", border_result.reason}};
   summary["timings_ms"]["objects"] = objects_ms;
+  summary["timings_ms"]["border"] = border_ms;
   app::finish_summary(summary, out, outputs, t_write, setup->start);
 
   app::report("furniture-extract", run);

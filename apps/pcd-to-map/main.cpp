@@ -49,6 +49,7 @@ int run(int argc, char** argv) {
   const double border_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_border)
           .count();
+  const std::size_t furniture_count = objs.objects.size();
   app::add_border_objects(objs, border_result);
 
   const auto t_write = std::chrono::steady_clock::now();
@@ -67,7 +68,9 @@ int run(int argc, char** argv) {
   json summary = app::summary_json("pcd-to-map", run, cfg);
   summary["border"] = border_block;
   summary["route"] = route ? route->summary : json(nullptr);
-  summary["objects"] = {{"count", objs.objects.size()}, {"file", "objects.json"}};
+  summary["objects"] = {{"count", objs.objects.size()},
+                        {"from_border", objs.objects.size() - furniture_count},
+                        {"file", "objects.json"}};
   summary["timings_ms"]["objects"] = objects_ms;
   app::finish_summary(summary, out, outputs, t_write, setup->start);
 
