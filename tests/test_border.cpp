@@ -394,6 +394,35 @@ TEST(Border, AccuracyAgainstTrueWallFaces) {
             << 100 * as[as.size() / 2] << " % (worst " << 100 * worst_a << " %)\n";
 }
 
+// A round pillar (radius_m) at centre as a scanner at scanner sees it: the lit part of its rim
+// (rim_m deep) is wall, its inside and everything behind it (its shadow, walls included) unknown.
+void add_round_pillar(Grid<Cell>& lay, const GridGeometry& geo, const Eigen::Vector2d& scanner,
+                      const Eigen::Vector2d& centre, double radius_m, double rim_m = 0.1) {
+  for (int r = 0; r < geo.height(); ++r)
+    for (int c = 0; c < geo.width(); ++c) {
+      const Eigen::Vector2d p = geo.center_of({c, r});
+      const Eigen::Vector2d ray = (p - scanner).normalized();
+      const double along = (centre - scanner).dot(ray);
+      const double miss = (scanner + ray * along - centre).norm();
+      // The ray enters the pillar more than the rim's depth before it reaches p.
+      const bool behind =
+          along > 0 && miss <= radius_m &&
+          along - std::sqrt(radius_m * radius_m - miss * miss) < (p - scanner).norm() - rim_m;
+      const double to_centre = (p - centre).norm();
+      if (to_centre <= radius_m && to_centre > radius_m - rim_m && !behind)
+        lay.at(c, r) = Cell::kWall;  // the lit rim
+      else if (to_centre <= radius_m || (behind && lay.at(c, r) != Cell::kUnknown))
+        lay.at(c, r) = Cell::kUnknown;  // the pillar's inside and its shadow
+    }
+}
+
+Grid<Cell> to_layout(const cv::Mat& img) {
+  Grid<Cell> lay(img.cols, img.rows);
+  for (int r = 0; r < img.rows; ++r)
+    for (int c = 0; c < img.cols; ++c) lay.at(c, r) = static_cast<Cell>(img.at<std::uint8_t>(r, c));
+  return lay;
+}
+
 // A rectangular room (faces x in [1, 6] m, y in [1, 4] m, walls 0.1 m) as a single scan sees it:
 // a round pillar (radius 0.3 m) stands 0.7 m in front of the north wall and hides a wedge of the
 // floor and of that wall from the scanner (unknown cells reaching the wall, 1.1 m wide there; of
@@ -411,28 +440,9 @@ TEST(Border, ShadowBehindAPillarIsBridgedASeenColumnKeepsItsNotch) {
   // The column's inside (behind its 0.1 m faces) and the wall behind it are not seen.
   fill(img, {{3.9, 0.85}, {4.9, 0.85}, {4.9, 1.4}, {3.9, 1.4}}, geo,
        static_cast<int>(Cell::kUnknown));
-  Grid<Cell> lay(geo.width(), geo.height());
-  for (int r = 0; r < geo.height(); ++r)
-    for (int c = 0; c < geo.width(); ++c)
-      lay.at(c, r) = static_cast<Cell>(img.at<std::uint8_t>(r, c));
-  const Eigen::Vector2d scanner(2.5, 1.8), pillar(2.5, 3.0);
-  constexpr double kRadius = 0.3, kRim = 0.1;
-  for (int r = 0; r < geo.height(); ++r)
-    for (int c = 0; c < geo.width(); ++c) {
-      const Eigen::Vector2d p = geo.center_of({c, r});
-      const Eigen::Vector2d ray = (p - scanner).normalized();
-      const double along = (pillar - scanner).dot(ray);
-      const double miss = (scanner + ray * along - pillar).norm();
-      // The ray enters the pillar more than the rim's depth before it reaches p.
-      const bool behind =
-          along > 0 && miss <= kRadius &&
-          along - std::sqrt(kRadius * kRadius - miss * miss) < (p - scanner).norm() - kRim;
-      const double to_centre = (p - pillar).norm();
-      if (to_centre <= kRadius && to_centre > kRadius - kRim && !behind)
-        lay.at(c, r) = Cell::kWall;  // the lit rim
-      else if (to_centre <= kRadius || (behind && lay.at(c, r) != Cell::kUnknown))
-        lay.at(c, r) = Cell::kUnknown;  // the pillar's inside and its shadow
-    }
+  Grid<Cell> lay = to_layout(img);
+  const Eigen::Vector2d scanner(2.5, 1.8);
+  add_round_pillar(lay, geo, scanner, {2.5, 3.0}, 0.3);
   const auto r = border::close_border(lay, geo, {scanner});
   if (const char* dir = std::getenv("INDOORMAP_BORDER_DEBUG"))
     debug_picture(std::string(dir) + "/shadow_room.png", lay, geo, r, truth);
@@ -460,6 +470,59 @@ TEST(Border, ShadowBehindAPillarIsBridgedASeenColumnKeepsItsNotch) {
     for (const auto& v : r.polygon_m) best = std::min(best, (v - corner).norm());
     EXPECT_LE(best, 0.1) << "column corner " << fmt(corner);
   }
+}
+
+// The same room without the column; the pillar (radius 0.35 m) stands before the north-east
+// corner, seen from the far side of the room, and hides the corner and the ends of both walls
+// (0.55 m of the north wall, 0.7 m of the east one). The polygon takes the two walls to their
+// crossing across the shadow. Beside it, a room whose north-east corner is cut by two seen walls
+// with the unseen outside behind them (a bay): its chain cuts into the corner like the shadow's,
+// but its flanks are wall faces, and the cut stays.
+TEST(Border, ShadowOverACornerIsBridgedToTheWallsCrossingASeenChamferStays) {
+  const GridGeometry geo({0.0, 0.0}, kCell, 140, 100);
+  const Polygon truth{{1.0, 1.0}, {6.0, 1.0}, {6.0, 4.0}, {1.0, 4.0}};
+  cv::Mat img(geo.height(), geo.width(), CV_8U, cv::Scalar(0));
+  fill(img, offset_rectilinear(truth, 0.1), geo, static_cast<int>(Cell::kWall));
+  fill(img, offset_rectilinear(truth, -kCell), geo, static_cast<int>(Cell::kFree));
+  Grid<Cell> lay = to_layout(img);
+  const Eigen::Vector2d scanner(2.0, 1.8);
+  add_round_pillar(lay, geo, scanner, {5.0, 3.3}, 0.35);
+  auto r = border::close_border(lay, geo, {scanner});
+  if (const char* dir = std::getenv("INDOORMAP_BORDER_DEBUG"))
+    debug_picture(std::string(dir) + "/corner_shadow_room.png", lay, geo, r, truth);
+  expect_valid_chain(r, "room with a pillar's shadow over a corner");
+  EXPECT_TRUE(r.warnings.empty()) << r.warnings[0];
+  EXPECT_LE(hausdorff(r.polygon_m, truth), 0.15) << "Hausdorff to the true faces";
+  EXPECT_NEAR(r.area_m2, 15.0, 0.3);
+  double best = 1e300;
+  for (const auto& v : r.polygon_m) best = std::min(best, (v - Eigen::Vector2d(6.0, 4.0)).norm());
+  EXPECT_LE(best, 0.1) << "the hidden corner is a vertex";
+  EXPECT_TRUE(r.openings.empty()) << r.openings.size() << " opening(s), the first at "
+                                  << fmt(r.openings[0].a_m);
+
+  // The cut corner in two facets, so the chain's detour has a vertex well inside both walls.
+  const Polygon cut{{1.0, 1.0}, {6.0, 1.0}, {6.0, 3.0}, {5.7, 3.7}, {5.0, 4.0}, {1.0, 4.0}};
+  auto miter = [](const Polygon& p, double d) {  // outward offset of a convex ccw polygon
+    const std::size_t n = p.size();
+    Polygon out(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Eigen::Vector2d e1 = (p[i] - p[(i + n - 1) % n]).normalized(),
+                            e2 = (p[(i + 1) % n] - p[i]).normalized();
+      const Eigen::Vector2d n1(e1.y(), -e1.x()), n2(e2.y(), -e2.x());
+      out[i] = p[i] + (n1 + n2) * (d / (1.0 + n1.dot(n2)));
+    }
+    return out;
+  };
+  cv::Mat img2(geo.height(), geo.width(), CV_8U, cv::Scalar(0));  // unknown behind the walls
+  fill(img2, miter(cut, 0.1), geo, static_cast<int>(Cell::kWall));
+  fill(img2, miter(cut, -kCell), geo, static_cast<int>(Cell::kFree));
+  r = border::close_border(to_layout(img2), geo, {scanner});
+  if (const char* dir = std::getenv("INDOORMAP_BORDER_DEBUG"))
+    debug_picture(std::string(dir) + "/chamfer_room.png", to_layout(img2), geo, r, cut);
+  expect_valid_chain(r, "room with a cut corner");
+  EXPECT_LE(hausdorff(r.polygon_m, cut), 0.15) << "Hausdorff to the true faces";
+  EXPECT_NEAR(r.area_m2, border::signed_area(cut), 0.3);
+  EXPECT_FALSE(border::contains(r.polygon_m, {5.85, 3.85}));
 }
 
 TEST(Border, ScannerChoosesAmongSeveralRings) {
@@ -571,12 +634,23 @@ TEST(BorderJacobs, OneClosedRoughlyRectangularPolygonWithTheDoor) {
 // INDOORMAP_BORDER_DEBUG=DIR prints the figures of every scene and writes DIR/sim_<seed>.png
 // (INDOORMAP_BORDER_DEBUG_SEED=N: only that scene; INDOORMAP_BORDER_DEBUG_BOX=x0,y0,x1,y1: a
 // close-up of that box in map metres).
-TEST(BorderSim, AccuracyOnSimulatedScenes) {
+namespace {
+
+// The figures of the border closure on the random scenes of seeds [first, last].
+struct SimBorderFigures {
   int scenes = 0, closed = 0, doors = 0, doors_found = 0, within_h = 0, within_a = 0;
-  int covered = 0;   // scenes whose layout leaves less than 1 % of the room unknown
-  int spurious = 0;  // openings more than 0.4 m from every door of the room
-  std::vector<double> hs, as;
-  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+  int covered = 0;             // scenes whose layout leaves less than 1 % of the room unknown
+  int spurious = 0;            // openings more than 0.4 m from every door of the room
+  std::vector<double> hs, as;  // Hausdorff [m] and |area error| of the closed scenes, sorted
+  double median_h() const { return hs.empty() ? 1e9 : hs[hs.size() / 2]; }
+  double median_a() const { return as.empty() ? 1e9 : as[as.size() / 2]; }
+};
+
+// With assert_covered, the targets are asserted on each scene whose layout covers the room.
+SimBorderFigures border_on_sim_scenes(std::uint64_t first, std::uint64_t last,
+                                      bool assert_covered) {
+  SimBorderFigures f;
+  for (std::uint64_t seed = first; seed <= last; ++seed) {
     sim::Scene scene = sim::random_scene(seed, {.rooms = 1, .scanner_in_corridor = false});
     scene.tilt = {};
     scene.scanner.azimuth_step_deg = scene.scanner.elevation_step_deg = 0.4;
@@ -586,12 +660,15 @@ TEST(BorderSim, AccuracyOnSimulatedScenes) {
     cloud.scanners = s.scanner_positions_m;
     const auto m = layout::make_map(std::move(cloud), {});
     const auto r = border::close_border(m);
-    ++scenes;
+    ++f.scenes;
     const sim::Scene norm = sim::normalised(scene);
     const sim::Room* room = nullptr;
     for (const auto& rm : norm.rooms)
       if (rm.kind == sim::RoomKind::kRoom) room = &rm;
-    ASSERT_NE(room, nullptr);
+    if (room == nullptr) {
+      ADD_FAILURE() << "seed " << seed << ": no room in the scene";
+      continue;
+    }
     // The share of the true room that the layout leaves unknown (not wall, furniture or free).
     std::int64_t in_room = 0, unknown = 0;
     for (int row = 0; row < m.geometry.height(); ++row)
@@ -610,18 +687,23 @@ TEST(BorderSim, AccuracyOnSimulatedScenes) {
       std::cout << "[ sim ] seed " << seed << ": not closed: " << r.reason << "\n";
       continue;
     }
-    ++closed;
+    ++f.closed;
     const auto match = sim::evaluate_rooms({{room->name, "room", room->polygon}}, {r.polygon_m});
-    ASSERT_EQ(match.size(), 1u);
-    hs.push_back(match[0].hausdorff_m);
-    as.push_back(std::abs(match[0].area_error_rel));
-    within_h += match[0].hausdorff_m <= 0.15;
-    within_a += std::abs(match[0].area_error_rel) <= 0.03;
+    if (match.size() != 1u) {
+      ADD_FAILURE() << "seed " << seed << ": " << match.size() << " room matches";
+      continue;
+    }
+    f.hs.push_back(match[0].hausdorff_m);
+    f.as.push_back(std::abs(match[0].area_error_rel));
+    f.within_h += match[0].hausdorff_m <= 0.15;
+    f.within_a += std::abs(match[0].area_error_rel) <= 0.03;
     if (unknown_share < 0.01) {
-      ++covered;
-      EXPECT_LE(match[0].hausdorff_m, 0.15) << "seed " << seed;
-      EXPECT_LE(std::abs(match[0].area_error_rel), 0.03) << "seed " << seed;
-      EXPECT_TRUE(r.warnings.empty()) << "seed " << seed << ": " << r.warnings[0];
+      ++f.covered;
+      if (assert_covered) {
+        EXPECT_LE(match[0].hausdorff_m, 0.15) << "seed " << seed;
+        EXPECT_LE(std::abs(match[0].area_error_rel), 0.03) << "seed " << seed;
+        EXPECT_TRUE(r.warnings.empty()) << "seed " << seed << ": " << r.warnings[0];
+      }
     }
     if (debug_dir) {
       const auto chain_match =
@@ -640,7 +722,7 @@ TEST(BorderSim, AccuracyOnSimulatedScenes) {
     const auto& poly = room->polygon;
     std::vector<std::uint8_t> at_door(r.openings.size(), 0);
     for (const auto& d : room->doors) {
-      ++doors;
+      ++f.doors;
       const Eigen::Vector2d a = poly[static_cast<std::size_t>(d.edge)],
                             b = poly[(static_cast<std::size_t>(d.edge) + 1) % poly.size()];
       const Eigen::Vector2d mid = a + (b - a).normalized() * d.at_m;
@@ -650,31 +732,70 @@ TEST(BorderSim, AccuracyOnSimulatedScenes) {
           found = true;
           at_door[i] = 1;
         }
-      doors_found += found;
+      f.doors_found += found;
     }
-    spurious += static_cast<int>(std::count(at_door.begin(), at_door.end(), 0));
+    f.spurious += static_cast<int>(std::count(at_door.begin(), at_door.end(), 0));
   }
-  std::sort(hs.begin(), hs.end());
-  std::sort(as.begin(), as.end());
-  ASSERT_FALSE(hs.empty());
-  std::cout << "[ sim ] " << scenes << " scenes, " << closed
-            << " closed; Hausdorff <= 0.15 m: " << within_h << ", area error <= 3 %: " << within_a
-            << " (layout covers the room in " << covered << "); median Hausdorff "
-            << hs[hs.size() / 2] << " m, median area error " << 100 * as[as.size() / 2]
-            << " %; doors found " << doors_found << " / " << doors << ", other openings "
-            << spurious << "\n";
-  EXPECT_EQ(scenes, 20);
-  EXPECT_EQ(closed, 20);
-  EXPECT_EQ(doors_found, doors);  // every door of every room
-  EXPECT_EQ(doors, 20);
+  std::sort(f.hs.begin(), f.hs.end());
+  std::sort(f.as.begin(), f.as.end());
+  std::cout << "[ sim ] seeds " << first << "-" << last << ": " << f.scenes << " scenes, "
+            << f.closed << " closed; Hausdorff <= 0.15 m: " << f.within_h
+            << ", area error <= 3 %: " << f.within_a << " (layout covers the room in " << f.covered
+            << "); median Hausdorff " << f.median_h() << " m, median area error "
+            << 100 * f.median_a() << " %; worst " << (f.hs.empty() ? 0.0 : f.hs.back()) << " m, "
+            << 100 * (f.as.empty() ? 0.0 : f.as.back()) << " %; doors found " << f.doors_found
+            << " / " << f.doors << ", other openings " << f.spurious << "\n";
+  return f;
+}
+
+}  // namespace
+
+TEST(BorderSim, AccuracyOnSimulatedScenes) {
+  const SimBorderFigures f = border_on_sim_scenes(1, 20, /*assert_covered=*/true);
+  EXPECT_EQ(f.scenes, 20);
+  EXPECT_EQ(f.closed, 20);
+  EXPECT_EQ(f.doors_found, f.doors);  // every door of every room
+  EXPECT_EQ(f.doors, 20);
   // Openings other than doors: before the polygon bridged shadows, the edges of the shadows of
   // a pillar (seed 17: a 1.11 m door candidate) and of a round object (seed 9: 0.47 and 0.52 m).
-  EXPECT_EQ(spurious, 0);
-  EXPECT_GE(covered, 18);   // the targets hold on each of them (above)
-  EXPECT_EQ(within_h, 20);  // 19 before the polygon bridged shadows (seed 17: 0.61 m)
-  EXPECT_EQ(within_a, 20);  // 19 before (seed 17: -3.3 %)
-  EXPECT_LE(hs[hs.size() / 2], 0.05);
-  EXPECT_LE(as[as.size() / 2], 0.02);
+  EXPECT_EQ(f.spurious, 0);
+  EXPECT_GE(f.covered, 18);   // the targets hold on each of them (above)
+  EXPECT_EQ(f.within_h, 20);  // 19 before the polygon bridged shadows (seed 17: 0.61 m)
+  EXPECT_EQ(f.within_a, 20);  // 19 before (seed 17: -3.3 %)
+  EXPECT_LE(f.median_h(), 0.05);
+  EXPECT_LE(f.median_a(), 0.02);
+}
+
+// The same on 20 further scenes (seeds 21-40), as a check against overfitting the first 20.
+// Measured first with the code tuned on seeds 1-20: 19 of 20 within the targets, every door
+// found; seed 29 missed (1.12 m, -11.5 %, and one opening at a shadow's edge): a pillar's shadow
+// hid a corner of the room. The polygon now takes the walls to their crossing across such a
+// shadow (corner_shadow_bridge; seed 29: 0.10 m, -1.8 %), so these scenes are no longer unseen;
+// seeds 41-60 (next test) were measured only after that change.
+TEST(BorderSim, AccuracyOnFurtherScenes) {
+  const SimBorderFigures f = border_on_sim_scenes(21, 40, /*assert_covered=*/true);
+  EXPECT_EQ(f.scenes, 20);
+  EXPECT_EQ(f.closed, 20);
+  EXPECT_EQ(f.doors_found, f.doors);
+  EXPECT_EQ(f.spurious, 0);   // 1 before the corner bridge (seed 29)
+  EXPECT_EQ(f.within_h, 20);  // 19 before (seed 29)
+  EXPECT_EQ(f.within_a, 20);  // 19 before (seed 29)
+  EXPECT_LE(f.median_h(), 0.05);
+  EXPECT_LE(f.median_a(), 0.02);
+}
+
+// Seeds 41-60, first measured with today's code (2026-12-01): 20 of 20 within the targets
+// (median 0.019 m, 0.84 %; worst 0.043 m, 1.8 %), every door found, no other opening.
+TEST(BorderSim, AccuracyOnUnseenScenes) {
+  const SimBorderFigures f = border_on_sim_scenes(41, 60, /*assert_covered=*/true);
+  EXPECT_EQ(f.scenes, 20);
+  EXPECT_EQ(f.closed, 20);
+  EXPECT_EQ(f.doors_found, f.doors);
+  EXPECT_EQ(f.spurious, 0);
+  EXPECT_EQ(f.within_h, 20);
+  EXPECT_EQ(f.within_a, 20);
+  EXPECT_LE(f.median_h(), 0.05);
+  EXPECT_LE(f.median_a(), 0.02);
 }
 
 // Issue 5: the border analysis's other components feed the object list (pcd-to-map's

@@ -749,6 +749,76 @@ std::optional<Shadow> shadow_bridge(const std::vector<FaceLine>& lines, std::siz
   return Shadow{std::move(joint), std::move(region)};
 }
 
+// Whether the chain's detour between lines[i] and lines[i + k] (cyclic, k >= 2; both fitted) is
+// the shadow of an object standing in the room that hides a convex corner of the room (a pillar
+// before a corner, seen from the far side of the room: the corner and the ends of both walls are
+// unknown, and the chain cuts across the room round the object). It is when
+//  - the two lines turn left (counter-clockwise) by 60 to 120 degrees, and cross at X;
+//  - the detour runs from l1's end to l2's start within the corner: each vertex lies no more than
+//    out_max behind either line, and X lies at most max_size beyond both ends (along the lines);
+//  - the detour runs into the room: some vertex lies more than tol inside both lines;
+//  - more than kShadowMinUnknownShare of the cells between the detour and X are unknown;
+//  - its two flanks have fewer than kMinFacePoints face points off both lines (as shadow_bridge).
+// Returns the corner X and the region cut off (the detour closed through X), or nullopt.
+struct CornerShadow {
+  Eigen::Vector2d corner = Eigen::Vector2d::Zero();
+  Polygon region;  // cell units
+};
+std::optional<CornerShadow> corner_shadow_bridge(const std::vector<FaceLine>& lines, std::size_t i,
+                                                 std::size_t k, const Grid<Cell>& layout,
+                                                 double tol, double out_max, double max_size) {
+  const std::size_t m = lines.size();
+  const FaceLine& l1 = lines[i];
+  const FaceLine& l2 = lines[(i + k) % m];
+  const double turn = std::atan2(l1.u.x() * l2.u.y() - l1.u.y() * l2.u.x(), l1.u.dot(l2.u));
+  if (turn < 60.0 * M_PI / 180.0 || turn > 120.0 * M_PI / 180.0) return std::nullopt;
+  const auto x = intersect(l1, l2);
+  if (!x) return std::nullopt;
+  auto offset = [](const FaceLine& l, const Eigen::Vector2d& p) {
+    return (p - l.c).dot(l.normal());
+  };
+  Polygon detour{l1.b};
+  for (std::size_t q = 1; q < k; ++q) detour.push_back(lines[(i + q) % m].b);
+  // X beyond both ends: past l1's end along l1, before l2's start along l2.
+  const double beyond1 = (*x - detour.front()).dot(l1.u);
+  const double beyond2 = (detour.back() - *x).dot(l2.u);
+  if (beyond1 < -out_max || beyond1 > max_size || beyond2 < -out_max || beyond2 > max_size)
+    return std::nullopt;
+  double deepest = -std::numeric_limits<double>::infinity();
+  for (const auto& v : detour) {
+    const double o1 = offset(l1, v), o2 = offset(l2, v);
+    if (o1 < -out_max || o2 < -out_max || o1 > max_size || o2 > max_size) return std::nullopt;
+    deepest = std::max(deepest, std::min(o1, o2));
+  }
+  if (deepest <= tol) return std::nullopt;
+  for (const std::size_t q : {std::size_t{1}, k - 1}) {
+    std::size_t off = 0;
+    for (const auto& p : lines[(i + q) % m].inliers)
+      off += std::abs(offset(l1, p)) > tol && std::abs(offset(l2, p)) > tol;
+    if (off >= kMinFacePoints) return std::nullopt;
+  }
+  Polygon region = detour;
+  region.push_back(*x);
+  Eigen::Vector2d lo = region[0], hi = region[0];
+  for (const auto& v : region) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  std::int64_t cells = 0, unknown = 0;
+  for (int r = static_cast<int>(std::floor(lo.y())); r <= static_cast<int>(std::ceil(hi.y())); ++r)
+    for (int c = static_cast<int>(std::floor(lo.x())); c <= static_cast<int>(std::ceil(hi.x()));
+         ++c) {
+      const Eigen::Vector2d p(c, r);
+      if (offset(l1, p) <= 0.0 || offset(l2, p) <= 0.0 || !contains(region, p)) continue;
+      ++cells;
+      unknown += !layout.contains(c, r) || layout.at(c, r) == Cell::kUnknown;
+    }
+  if (cells == 0 ||
+      static_cast<double>(unknown) <= kShadowMinUnknownShare * static_cast<double>(cells))
+    return std::nullopt;
+  return CornerShadow{*x, std::move(region)};
+}
+
 // The polygon from the wall faces (cell units; poly is the simplified counter-clockwise chain
 // polygon, which gives the order of the faces):
 //  1. every edge of poly is fitted to the face points beside it (fit_edge); an edge without face
@@ -881,6 +951,25 @@ std::optional<Polygon> fit_to_faces(const Polygon& poly, const Grid<Cell>& layou
             if (shadows) shadows->push_back(std::move(sh->region));
             changed = true;
           }
+        }
+      }
+      if (changed) continue;
+      // The same round a room's corner: the lines between the two walls are dropped, and the
+      // walls meet at their crossing.
+      for (std::size_t i = 0; i < m && !changed; ++i) {
+        if (!supported(lines[i])) continue;
+        for (std::size_t k = 2; k + 2 <= m && !changed; ++k) {
+          if (!supported(lines[(i + k) % m])) continue;
+          auto sh = corner_shadow_bridge(lines, i, k, layout, kTol, chamfer_max, max_shadow);
+          if (!sh) continue;
+          lines[i].b = sh->corner;
+          lines[(i + k) % m].a = sh->corner;
+          std::vector<FaceLine> kept;
+          for (std::size_t q = 0; q < m; ++q)
+            if ((q + m - i) % m == 0 || (q + m - i) % m >= k) kept.push_back(std::move(lines[q]));
+          lines = std::move(kept);
+          if (shadows) shadows->push_back(std::move(sh->region));
+          changed = true;
         }
       }
       if (changed) continue;

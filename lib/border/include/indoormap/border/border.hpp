@@ -38,7 +38,9 @@ struct BorderParams {
   /// [m] the polygon runs straight along a wall across the shadow of an object standing in the
   /// room (an inward detour of the chain round a mostly unknown region, both ends on one wall
   /// face, flanks without wall faces) at most this wide along the wall and deep across it. A 0.6 m
-  /// pillar 1 m before the wall, seen from 1-2 m, hides 0.9-1.2 m of it (0 = off).
+  /// pillar 1 m before the wall, seen from 1-2 m, hides 0.9-1.2 m of it. A shadow over a convex
+  /// corner of the room is bridged to the two walls' crossing when that lies at most this far
+  /// beyond the shadow's ends along both walls (0 = off).
   double shadow_max_m = 2.0;
   /// [m] a chain cell is closed when a wall or furniture cell lies within this distance of it;
   /// chain cells with none are open (the chain runs at the back of the wall, sometimes a cell off).
