@@ -17,11 +17,16 @@ using nlohmann::json;
 
 namespace {
 
-json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+json vec(const Eigen::Vector3d& v) {
+  return {v.x(), v.y(), v.z()};
+}
 
 json plane_json(const cloud::PlaneFit& p) {
   if (!p.found) return nullptr;
-  return {{"normal", vec(p.normal)}, {"offset_m", p.offset_m}, {"inliers", p.inliers}, {"rms_m", p.rms_m}};
+  return {{"normal", vec(p.normal)},
+          {"offset_m", p.offset_m},
+          {"inliers", p.inliers},
+          {"rms_m", p.rms_m}};
 }
 
 json band_json(const cloud::HeightBand& b) {
@@ -54,11 +59,19 @@ std::optional<AppSetup> setup_pipeline_app(CLI::App& app, PipelineCli& cli, int 
   return s;
 }
 
-objects::ObjectsResult timed_objects(const layout::MapResult& m, const objects::ObjectParams& params,
-                                     double* ms) {
+objects::ObjectsResult timed_objects(const layout::MapResult& m,
+                                     const objects::ObjectParams& params, double* ms) {
   const auto t = std::chrono::steady_clock::now();
-  objects::ObjectsResult r = objects::extract_objects(m.layout.layout, m.geometry, m.voxels, m.layers, params,
-                                                         m.cloud_map.scanners);
+  objects::ObjectsResult r = objects::extract_objects(m.layout.layout, m.geometry, m.voxels,
+                                                      m.layers, params, m.cloud_map.scanners);
+  *ms = ms_since(t);
+  return r;
+}
+
+border::BorderResult timed_border(const layout::MapResult& m, const border::BorderParams& params,
+                                  double* ms) {
+  const auto t = std::chrono::steady_clock::now();
+  border::BorderResult r = border::close_border(m, params);
   *ms = ms_since(t);
   return r;
 }
@@ -78,10 +91,13 @@ PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_
   const auto t0 = std::chrono::steady_clock::now();
   cfg.load.progress = terminal_progress();
   cloud::LoadResult loaded = cloud::load_clouds(cli.inputs, cfg.load);
-  run.load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  run.load_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   run.inputs = loaded.inputs;
   if (!cfg.scanners.empty()) loaded.cloud.scanners = cfg.scanners;
-  run.scanner_source = loaded.cloud.scanners.empty() ? "estimated" : cfg.scanners.empty() ? "file" : "config";
+  run.scanner_source = loaded.cloud.scanners.empty() ? "estimated"
+                       : cfg.scanners.empty()        ? "file"
+                                                     : "config";
   run.kept = loaded.cloud.points.size();
   if (keep_input_points) run.input_points = loaded.cloud.points;
   try {
@@ -120,17 +136,22 @@ json summary_json(const std::string& program, const PipelineRun& run, const Pipe
   for (const auto& in : run.inputs) {
     read += in.points_read;
     dropped += in.points_dropped;
-    inputs.push_back({{"path", in.path}, {"format", in.format}, {"points_read", in.points_read},
-                      {"points_dropped", in.points_dropped}, {"scans", in.scans},
+    inputs.push_back({{"path", in.path},
+                      {"format", in.format},
+                      {"points_read", in.points_read},
+                      {"points_dropped", in.points_dropped},
+                      {"scans", in.scans},
                       {"scanner_known", in.scanner_known}});
   }
   json layers = json::array();
   for (std::size_t z = 0; z < m.layers.occupied_per_layer.size(); ++z)
-    layers.push_back({{"layer", z}, {"z_m", m.voxels.layer_center_m(static_cast<std::int64_t>(z))},
+    layers.push_back({{"layer", z},
+                      {"z_m", m.voxels.layer_center_m(static_cast<std::int64_t>(z))},
                       {"occupied_cells", m.layers.occupied_per_layer[z]}});
   json rot = json::array();
   for (int r = 0; r < 3; ++r)
-    rot.push_back({m.level.map_from_input(r, 0), m.level.map_from_input(r, 1), m.level.map_from_input(r, 2)});
+    rot.push_back(
+        {m.level.map_from_input(r, 0), m.level.map_from_input(r, 1), m.level.map_from_input(r, 2)});
   json scanners = json::array();
   for (const auto& s : m.cloud_map.scanners) scanners.push_back(vec(s));
   json seeds = json::array();
@@ -140,10 +161,13 @@ json summary_json(const std::string& program, const PipelineRun& run, const Pipe
   }
   json hanging = json::array();
   for (const auto& hg : m.layout.hanging) {
-    const Eigen::Vector2d lo = m.geometry.origin_m() + Eigen::Vector2d(hg.min_col, hg.min_row) * m.geometry.cell_m();
+    const Eigen::Vector2d lo =
+        m.geometry.origin_m() + Eigen::Vector2d(hg.min_col, hg.min_row) * m.geometry.cell_m();
     const Eigen::Vector2d hi =
-        m.geometry.origin_m() + Eigen::Vector2d(hg.max_col + 1, hg.max_row + 1) * m.geometry.cell_m();
-    hanging.push_back({{"bbox_m", {{"min", {lo.x(), lo.y()}}, {"max", {hi.x(), hi.y()}}}}, {"cells", hg.cells}});
+        m.geometry.origin_m() +
+        Eigen::Vector2d(hg.max_col + 1, hg.max_row + 1) * m.geometry.cell_m();
+    hanging.push_back(
+        {{"bbox_m", {{"min", {lo.x(), lo.y()}}, {"max", {hi.x(), hi.y()}}}}, {"cells", hg.cells}});
   }
   json timings = {{"load", run.load_ms}};
   for (const auto& t : m.timings) timings[t.stage] = t.ms;
@@ -151,15 +175,25 @@ json summary_json(const std::string& program, const PipelineRun& run, const Pipe
       {"program", program},
       {"version", kVersion},
       {"inputs", inputs},
-      {"points", {{"read", read}, {"dropped_nonfinite", dropped}, {"kept", run.kept},
-                  {"outside_bounds", m.voxels.points_outside}, {"in_grid", m.voxels.points_inside}}},
-      {"levelling", {{"levelled", m.level.levelled}, {"tilt_deg", m.level.tilt_deg},
-                     {"up_input", vec(m.level.up_input)}, {"map_from_input", rot},
-                     {"floor_plane_input", plane_json(m.level.floor)},
-                     {"ceiling_plane_input", plane_json(m.level.ceiling)}, {"note", m.level.note}}},
-      {"grid", {{"resolution_m", m.voxels.cell_m}, {"origin_m", vec(m.voxels.origin_m)},
-                {"size_cells", {m.voxels.nx, m.voxels.ny, m.voxels.nz}},
-                {"bounds_m", {{"lo", vec(m.bounds.lo_m)}, {"hi", vec(m.bounds.hi_m)}}}}},
+      {"points",
+       {{"read", read},
+        {"dropped_nonfinite", dropped},
+        {"kept", run.kept},
+        {"outside_bounds", m.voxels.points_outside},
+        {"in_grid", m.voxels.points_inside}}},
+      {"levelling",
+       {{"levelled", m.level.levelled},
+        {"tilt_deg", m.level.tilt_deg},
+        {"up_input", vec(m.level.up_input)},
+        {"map_from_input", rot},
+        {"floor_plane_input", plane_json(m.level.floor)},
+        {"ceiling_plane_input", plane_json(m.level.ceiling)},
+        {"note", m.level.note}}},
+      {"grid",
+       {{"resolution_m", m.voxels.cell_m},
+        {"origin_m", vec(m.voxels.origin_m)},
+        {"size_cells", {m.voxels.nx, m.voxels.ny, m.voxels.nz}},
+        {"bounds_m", {{"lo", vec(m.bounds.lo_m)}, {"hi", vec(m.bounds.hi_m)}}}}},
       {"floor_z_m", m.layers.floor_z_m},
       {"ceiling_z_m", m.layers.ceiling_z_m},
       {"ceiling_found", m.layers.ceiling_found},
@@ -172,11 +206,16 @@ json summary_json(const std::string& program, const PipelineRun& run, const Pipe
       {"scanner_source", run.scanner_source},
       {"flood_seeds_map_m", seeds},
       {"hanging_objects", hanging},
-      {"ghosts", {{"applied", m.ghosts.applied}, {"rays", m.ghosts.rays},
-                  {"voxels_removed", m.ghosts.voxels_removed},
-                  {"points_removed", m.ghosts.points_removed}}},
-      {"layout_cells", {{"wall", m.layout.cells_wall}, {"furniture", m.layout.cells_furniture},
-                        {"free", m.layout.cells_free}, {"unknown", m.layout.cells_unknown}}},
+      {"ghosts",
+       {{"applied", m.ghosts.applied},
+        {"rays", m.ghosts.rays},
+        {"voxels_removed", m.ghosts.voxels_removed},
+        {"points_removed", m.ghosts.points_removed}}},
+      {"layout_cells",
+       {{"wall", m.layout.cells_wall},
+        {"furniture", m.layout.cells_furniture},
+        {"free", m.layout.cells_free},
+        {"unknown", m.layout.cells_unknown}}},
       {"timings_ms", timings},
       {"parameters", to_json(cfg)},
       {"warnings", m.warnings},
@@ -188,10 +227,11 @@ void report(const std::string& program, const PipelineRun& run) {
   std::uint64_t dropped = 0;
   for (const auto& in : run.inputs) dropped += in.points_dropped;
   for (const auto& w : m.warnings) std::cerr << program << ": warning: " << w << "\n";
-  std::cerr << program << ": " << run.kept << " points (" << dropped << " non-finite dropped), tilt "
-            << m.level.tilt_deg << " deg, floor " << m.layers.floor_z_m << " m, ceiling "
-            << m.layers.ceiling_z_m << " m" << (m.layers.ceiling_found ? "" : " (not detected)")
-            << ", grid " << m.geometry.width() << " x " << m.geometry.height() << "\n";
+  std::cerr << program << ": " << run.kept << " points (" << dropped
+            << " non-finite dropped), tilt " << m.level.tilt_deg << " deg, floor "
+            << m.layers.floor_z_m << " m, ceiling " << m.layers.ceiling_z_m << " m"
+            << (m.layers.ceiling_found ? "" : " (not detected)") << ", grid " << m.geometry.width()
+            << " x " << m.geometry.height() << "\n";
 }
 
 }  // namespace indoormap::app

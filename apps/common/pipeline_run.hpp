@@ -2,15 +2,15 @@
 // The part of every pipeline app between argument parsing and its own outputs: load the inputs,
 // run make_map, write the map outputs, and assemble summary.json.
 #include <Eigen/Core>
+#include <chrono>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include <chrono>
-#include <optional>
-
 #include "cli.hpp"
+#include "indoormap/border/border.hpp"
 #include "indoormap/cloud/load.hpp"
 #include "indoormap/layout/pipeline.hpp"
 #include "indoormap/objects/objects.hpp"
@@ -41,12 +41,17 @@ std::optional<AppSetup> setup_pipeline_app(CLI::App& app, PipelineCli& cli, int 
                                            int* exit_code);
 
 /// The objects of the map, and the time they took.
-objects::ObjectsResult timed_objects(const layout::MapResult& map, const objects::ObjectParams& params,
-                                     double* ms);
+objects::ObjectsResult timed_objects(const layout::MapResult& map,
+                                     const objects::ObjectParams& params, double* ms);
+
+/// The room border of the map (border closure), and the time it took.
+border::BorderResult timed_border(const layout::MapResult& map, const border::BorderParams& params,
+                                  double* ms);
 
 /// Adds the write and total timings and the output list to the summary, and writes it.
 void finish_summary(nlohmann::json& summary, const std::filesystem::path& out,
-                    std::vector<std::string> outputs, std::chrono::steady_clock::time_point write_start,
+                    std::vector<std::string> outputs,
+                    std::chrono::steady_clock::time_point write_start,
                     std::chrono::steady_clock::time_point start);
 
 /// Loads every input and makes the map. An error about the data as a whole (no file named) is
@@ -54,7 +59,8 @@ void finish_summary(nlohmann::json& summary, const std::filesystem::path& out,
 PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& config, bool keep_input_points);
 
 /// map.pgm + map.yaml, layout.pgm, layout.png. Returns the file names.
-std::vector<std::string> write_map_outputs(const std::filesystem::path& out, const PipelineRun& run);
+std::vector<std::string> write_map_outputs(const std::filesystem::path& out,
+                                           const PipelineRun& run);
 
 /// summary.json contents common to the pipeline apps; apps add their own keys.
 nlohmann::json summary_json(const std::string& program, const PipelineRun& run,

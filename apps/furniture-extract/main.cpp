@@ -5,7 +5,6 @@
 #include <iostream>
 
 #include "cli.hpp"
-#include "indoormap/border/border.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/io/map_io.hpp"
@@ -45,11 +44,8 @@ int run(int argc, char** argv) {
   double objects_ms = 0.0;
   objects::ObjectsResult objs = app::timed_objects(m, cfg.objects, &objects_ms);
   // The room border's own small objects (columns, installations) are listed too.
-  const auto t_border = std::chrono::steady_clock::now();
-  const border::BorderResult border_result = border::close_border(m, cfg.border);
-  const double border_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_border)
-          .count();
+  double border_ms = 0.0;
+  const border::BorderResult border_result = app::timed_border(m, cfg.border, &border_ms);
   const std::size_t furniture_count = objs.objects.size();
   app::add_border_objects(objs, border_result);
 

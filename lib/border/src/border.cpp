@@ -670,6 +670,28 @@ double distance_to_boundary(const Polygon& poly, const Eigen::Vector2d& p) {
   return best;
 }
 
+// Whether more than kShadowMinUnknownShare of the cells (cell units: cell (c, r) at (c, r)) inside
+// region and on the room side (room_side(p) > 0) are unknown, or off the layout.
+template <class RoomSide>
+bool mostly_unknown(const Polygon& region, const Grid<Cell>& layout, RoomSide room_side) {
+  Eigen::Vector2d lo = region[0], hi = region[0];
+  for (const auto& v : region) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  std::int64_t cells = 0, unknown = 0;
+  for (int r = static_cast<int>(std::floor(lo.y())); r <= static_cast<int>(std::ceil(hi.y())); ++r)
+    for (int c = static_cast<int>(std::floor(lo.x())); c <= static_cast<int>(std::ceil(hi.x()));
+         ++c) {
+      const Eigen::Vector2d p(c, r);
+      if (!(room_side(p) > 0.0) || !contains(region, p)) continue;
+      ++cells;
+      unknown += !layout.contains(c, r) || layout.at(c, r) == Cell::kUnknown;
+    }
+  return cells > 0 &&
+         static_cast<double>(unknown) > kShadowMinUnknownShare * static_cast<double>(cells);
+}
+
 // Whether the chain's detour between lines[i] and lines[i + k] (cyclic, k >= 2; both fitted) is
 // the shadow of an object standing in the room, cast on the wall behind it (a pillar 1 m before
 // a wall hides a wedge of the floor and of the wall: the wedge is unknown in the layout, and the
@@ -729,23 +751,7 @@ std::optional<Shadow> shadow_bridge(const std::vector<FaceLine>& lines, std::siz
   Polygon region = detour;
   region.push_back(joint.c + joint.u * s1);
   region.push_back(joint.c + joint.u * s0);
-  Eigen::Vector2d lo = region[0], hi = region[0];
-  for (const auto& v : region) {
-    lo = lo.cwiseMin(v);
-    hi = hi.cwiseMax(v);
-  }
-  std::int64_t cells = 0, unknown = 0;
-  for (int r = static_cast<int>(std::floor(lo.y())); r <= static_cast<int>(std::ceil(hi.y())); ++r)
-    for (int c = static_cast<int>(std::floor(lo.x())); c <= static_cast<int>(std::ceil(hi.x()));
-         ++c) {
-      const Eigen::Vector2d p(c, r);
-      if (offset(p) <= 0.0 || !contains(region, p)) continue;
-      ++cells;
-      unknown += !layout.contains(c, r) || layout.at(c, r) == Cell::kUnknown;
-    }
-  if (cells == 0 ||
-      static_cast<double>(unknown) <= kShadowMinUnknownShare * static_cast<double>(cells))
-    return std::nullopt;
+  if (!mostly_unknown(region, layout, offset)) return std::nullopt;
   return Shadow{std::move(joint), std::move(region)};
 }
 
@@ -799,22 +805,9 @@ std::optional<CornerShadow> corner_shadow_bridge(const std::vector<FaceLine>& li
   }
   Polygon region = detour;
   region.push_back(*x);
-  Eigen::Vector2d lo = region[0], hi = region[0];
-  for (const auto& v : region) {
-    lo = lo.cwiseMin(v);
-    hi = hi.cwiseMax(v);
-  }
-  std::int64_t cells = 0, unknown = 0;
-  for (int r = static_cast<int>(std::floor(lo.y())); r <= static_cast<int>(std::ceil(hi.y())); ++r)
-    for (int c = static_cast<int>(std::floor(lo.x())); c <= static_cast<int>(std::ceil(hi.x()));
-         ++c) {
-      const Eigen::Vector2d p(c, r);
-      if (offset(l1, p) <= 0.0 || offset(l2, p) <= 0.0 || !contains(region, p)) continue;
-      ++cells;
-      unknown += !layout.contains(c, r) || layout.at(c, r) == Cell::kUnknown;
-    }
-  if (cells == 0 ||
-      static_cast<double>(unknown) <= kShadowMinUnknownShare * static_cast<double>(cells))
+  if (!mostly_unknown(region, layout, [&](const Eigen::Vector2d& p) {
+        return std::min(offset(l1, p), offset(l2, p));
+      }))
     return std::nullopt;
   return CornerShadow{*x, std::move(region)};
 }
