@@ -24,7 +24,7 @@
 #include "test_support.hpp"
 
 using namespace indoormap;
-using border::Polygon;
+using indoormap::Polygon;
 
 namespace {
 
@@ -141,12 +141,12 @@ void expect_valid_chain(const border::BorderResult& r, const std::string& what) 
   }
   Polygon raw;
   for (const auto& c : r.chain) raw.emplace_back(c.col, c.row);
-  EXPECT_TRUE(border::is_simple(raw)) << what << ": chain polygon self-intersects";
-  EXPECT_GT(border::signed_area(raw), 0.0) << what << ": chain not counter-clockwise";
-  EXPECT_TRUE(border::is_simple(r.polygon_m)) << what << ": polygon self-intersects";
-  EXPECT_GT(border::signed_area(r.polygon_m), 0.0) << what;
-  EXPECT_NEAR(r.area_m2, border::signed_area(r.polygon_m), 1e-9);
-  EXPECT_NEAR(r.perimeter_m, border::perimeter(r.polygon_m), 1e-9);
+  EXPECT_TRUE(indoormap::is_simple(raw)) << what << ": chain polygon self-intersects";
+  EXPECT_GT(indoormap::signed_area(raw), 0.0) << what << ": chain not counter-clockwise";
+  EXPECT_TRUE(indoormap::is_simple(r.polygon_m)) << what << ": polygon self-intersects";
+  EXPECT_GT(indoormap::signed_area(r.polygon_m), 0.0) << what;
+  EXPECT_NEAR(r.area_m2, indoormap::signed_area(r.polygon_m), 1e-9);
+  EXPECT_NEAR(r.perimeter_m, indoormap::perimeter(r.polygon_m), 1e-9);
 }
 
 std::string fmt(const Eigen::Vector2d& v) {
@@ -264,7 +264,7 @@ std::string edge_offsets_mm(const Polygon& truth, const Polygon& result) {
         const double t = std::clamp((q - u).dot(v - u) / (v - u).squaredNorm(), 0.0, 1.0);
         best = std::min(best, (u + (v - u) * t - q).norm());
       }
-      sum += border::contains(result, q) ? best : -best;
+      sum += indoormap::contains(result, q) ? best : -best;
       ++cnt;
     }
     out += ' ';
@@ -277,12 +277,12 @@ std::string edge_offsets_mm(const Polygon& truth, const Polygon& result) {
 
 TEST(BorderPolygon, HelpersOnHandCheckableShapes) {
   const Polygon sq{{0, 0}, {2, 0}, {2, 2}, {0, 2}};
-  EXPECT_DOUBLE_EQ(border::signed_area(sq), 4.0);
-  EXPECT_DOUBLE_EQ(border::perimeter(sq), 8.0);
-  EXPECT_TRUE(border::contains(sq, {1, 1}));
-  EXPECT_FALSE(border::contains(sq, {3, 1}));
-  EXPECT_TRUE(border::is_simple(sq));
-  EXPECT_FALSE(border::is_simple({{0, 0}, {2, 2}, {2, 0}, {0, 2}}));  // bow tie
+  EXPECT_DOUBLE_EQ(indoormap::signed_area(sq), 4.0);
+  EXPECT_DOUBLE_EQ(indoormap::perimeter(sq), 8.0);
+  EXPECT_TRUE(indoormap::contains(sq, {1, 1}));
+  EXPECT_FALSE(indoormap::contains(sq, {3, 1}));
+  EXPECT_TRUE(indoormap::is_simple(sq));
+  EXPECT_FALSE(indoormap::is_simple({{0, 0}, {2, 2}, {2, 0}, {0, 2}}));  // bow tie
   EXPECT_NEAR(border::min_area_rect_area(sq), 4.0, 1e-6);
 }
 
@@ -316,7 +316,7 @@ TEST(Border, PropertiesOnManyGeneratedRooms) {
     const auto r = border::close_border(room.layout, room.geo, {room.scanner});
     const std::string what = "seed " + std::to_string(seed) + (l_shape ? " (L)" : " (rect)");
     expect_valid_chain(r, what);
-    EXPECT_TRUE(border::contains(r.polygon_m, room.scanner)) << what;
+    EXPECT_TRUE(indoormap::contains(r.polygon_m, room.scanner)) << what;
     ++checked;
   }
   EXPECT_EQ(checked, 40);
@@ -370,7 +370,7 @@ TEST(Border, AccuracyAgainstTrueWallFaces) {
       debug_picture(std::string(dir) + "/room_" + std::to_string(seed) + ".png", room.layout,
                     room.geo, r, room.face);
     const double h = hausdorff(r.polygon_m, room.face);
-    const double true_area = border::signed_area(room.face);
+    const double true_area = indoormap::signed_area(room.face);
     const double rel = std::abs(r.area_m2 - true_area) / true_area;
     EXPECT_LE(h, 0.15) << "seed " << seed << (r.warnings.empty() ? "" : ": " + r.warnings[0]);
     EXPECT_LE(rel, 0.04) << "seed " << seed << ": area " << r.area_m2 << " vs " << true_area;
@@ -378,7 +378,7 @@ TEST(Border, AccuracyAgainstTrueWallFaces) {
     as.push_back(rel);
     if (std::getenv("INDOORMAP_BORDER_DEBUG"))
       std::cout << "[ accuracy ] seed " << seed << " true " << true_area << " poly " << r.area_m2
-                << " chainpoly " << border::signed_area(r.chain_polygon_m) << " h " << h
+                << " chainpoly " << indoormap::signed_area(r.chain_polygon_m) << " h " << h
                 << " hchain " << hausdorff(r.chain_polygon_m, room.face) << " edge offsets"
                 << edge_offsets_mm(room.face, r.polygon_m) << " mm\n";
     worst_h = std::max(worst_h, h);
@@ -449,7 +449,7 @@ TEST(Border, ShadowBehindAPillarIsBridgedASeenColumnKeepsItsNotch) {
   expect_valid_chain(r, "room with a pillar's shadow");
   EXPECT_TRUE(r.warnings.empty()) << r.warnings[0];
   const double h = hausdorff(r.polygon_m, truth);
-  const double rel = (r.area_m2 - border::signed_area(truth)) / border::signed_area(truth);
+  const double rel = (r.area_m2 - indoormap::signed_area(truth)) / indoormap::signed_area(truth);
   EXPECT_LE(h, 0.15) << "Hausdorff to the true faces";
   EXPECT_LE(std::abs(rel), 0.02) << "area " << r.area_m2;
   // Along the north wall (y = 4 m) the polygon has no vertex below 3.8 m between x 1.5 and 5.5 m.
@@ -464,7 +464,7 @@ TEST(Border, ShadowBehindAPillarIsBridgedASeenColumnKeepsItsNotch) {
   // The column stays outside the polygon, and its front corners are vertices. (The chain cuts
   // the column's hollow at 45 degrees, and a face line may turn only 30 degrees from its chain
   // edge: the flanks lean by up to 0.1 m.)
-  EXPECT_FALSE(border::contains(r.polygon_m, {4.4, 1.35}));
+  EXPECT_FALSE(indoormap::contains(r.polygon_m, {4.4, 1.35}));
   for (const Eigen::Vector2d& corner : {Eigen::Vector2d(3.8, 1.5), Eigen::Vector2d(5.0, 1.5)}) {
     double best = 1e300;
     for (const auto& v : r.polygon_m) best = std::min(best, (v - corner).norm());
@@ -521,8 +521,8 @@ TEST(Border, ShadowOverACornerIsBridgedToTheWallsCrossingASeenChamferStays) {
     debug_picture(std::string(dir) + "/chamfer_room.png", to_layout(img2), geo, r, cut);
   expect_valid_chain(r, "room with a cut corner");
   EXPECT_LE(hausdorff(r.polygon_m, cut), 0.15) << "Hausdorff to the true faces";
-  EXPECT_NEAR(r.area_m2, border::signed_area(cut), 0.3);
-  EXPECT_FALSE(border::contains(r.polygon_m, {5.85, 3.85}));
+  EXPECT_NEAR(r.area_m2, indoormap::signed_area(cut), 0.3);
+  EXPECT_FALSE(indoormap::contains(r.polygon_m, {5.85, 3.85}));
 }
 
 TEST(Border, ScannerChoosesAmongSeveralRings) {
@@ -608,7 +608,7 @@ TEST(BorderJacobs, OneClosedRoughlyRectangularPolygonWithTheDoor) {
   expect_valid_chain(r, "jacobs");
   ASSERT_FALSE(m.cloud_map.scanners.empty());
   const Eigen::Vector2d s(m.cloud_map.scanners[0].x(), m.cloud_map.scanners[0].y());
-  EXPECT_TRUE(border::contains(r.polygon_m, s));
+  EXPECT_TRUE(indoormap::contains(r.polygon_m, s));
   const double rect = border::min_area_rect_area(r.polygon_m);
   EXPECT_GT(r.area_m2, 0.85 * rect) << "area " << r.area_m2 << " vs min-area rectangle " << rect;
   EXPECT_GT(r.area_m2, 25.0);
@@ -673,7 +673,7 @@ SimBorderFigures border_on_sim_scenes(std::uint64_t first, std::uint64_t last,
     std::int64_t in_room = 0, unknown = 0;
     for (int row = 0; row < m.geometry.height(); ++row)
       for (int col = 0; col < m.geometry.width(); ++col)
-        if (border::contains(room->polygon, m.geometry.center_of({col, row}))) {
+        if (indoormap::contains(room->polygon, m.geometry.center_of({col, row}))) {
           ++in_room;
           unknown += m.layout.layout.at(col, row) == Cell::kUnknown;
         }

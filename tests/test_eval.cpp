@@ -115,8 +115,8 @@ TEST(EvalObjects, MatchingRecallPrecisionAndHeights) {
 TEST(EvalRooms, HausdorffAndAreaError) {
   std::vector<TruthRoom> truth = {{"lab", "room", rectangle({2, 1.5}, {4, 3}, 0)},
                                   {"corridor", "corridor", rectangle({2, -1.2}, {6, 2}, 0)}};
-  const Polygon2 shifted = rectangle({2.1, 1.5}, {4, 3}, 0);
-  const Polygon2 bigger = rectangle({2, 1.5}, {4.2, 3}, 0);
+  const Polygon shifted = rectangle({2.1, 1.5}, {4, 3}, 0);
+  const Polygon bigger = rectangle({2, 1.5}, {4.2, 3}, 0);
   const auto m = evaluate_rooms(truth, {shifted, bigger, rectangle({50, 50}, {1, 1}, 0)});
   ASSERT_EQ(m.size(), 3u);
   EXPECT_EQ(m[0].truth_name, "lab");

@@ -485,7 +485,7 @@ SceneScore score_scene(std::uint64_t seed, double min_area_m2) {
     if (!t.on_floor) continue;
     sim::EvalObject e{t.id, "", t.footprint, t.z_min_m, t.z_max_m, true};
     truth_all.push_back(e);
-    if (std::abs(sim::signed_area(t.footprint)) >= min_area_m2) truth_big.push_back(e);
+    if (std::abs(indoormap::signed_area(t.footprint)) >= min_area_m2) truth_big.push_back(e);
   }
   for (const auto& o : objs.objects) {
     if (o.kind == "hanging" || o.kind == "lamp") continue;  // floor items only, as map-eval does
@@ -560,7 +560,7 @@ SceneScore score_scene(std::uint64_t seed, double min_area_m2) {
             }
           }
           std::printf("  missed %s area %.2f best %s %.2f\n", id.c_str(),
-                      std::abs(sim::signed_area(t.footprint)), best.c_str(), best_iou);
+                      std::abs(indoormap::signed_area(t.footprint)), best.c_str(), best_iou);
         }
     for (const auto& id : for_precision.spurious)
       for (const auto& o : objs.objects)

@@ -129,7 +129,7 @@ void add_border_objects(objects::ObjectsResult& objs, const border::BorderResult
   if (!r.closed) return;
   for (const auto& io : r.interior_objects) {
     const Eigen::Vector2d centre = 0.5 * (io.min_m + io.max_m);
-    if (!border::contains(r.polygon_m, centre)) continue;
+    if (!indoormap::contains(r.polygon_m, centre)) continue;
     bool covered = false;
     for (const auto& o : objs.objects)
       covered |=

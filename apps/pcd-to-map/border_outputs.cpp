@@ -22,7 +22,7 @@ json xy(const Eigen::Vector2d& p) {
   return {p.x(), p.y()};
 }
 
-json ring_json(const border::Polygon& poly) {
+json ring_json(const indoormap::Polygon& poly) {
   json ring = json::array();
   for (const auto& v : poly) ring.push_back(xy(v));
   if (!poly.empty()) ring.push_back(xy(poly.front()));  // GeoJSON rings repeat the first vertex
@@ -64,7 +64,7 @@ json geojson(const border::BorderResult& r) {
          {"properties",
           {{"kind", "opening"}, {"width_m", o.width_m}, {"door_candidate", o.is_door_candidate}}}});
   for (const auto& o : r.interior_objects) {
-    const border::Polygon box{
+    const indoormap::Polygon box{
         o.min_m, {o.max_m.x(), o.min_m.y()}, o.max_m, {o.min_m.x(), o.max_m.y()}};
     features.push_back(
         {{"type", "Feature"},

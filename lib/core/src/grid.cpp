@@ -27,4 +27,8 @@ Eigen::Vector2d GridGeometry::center_of(CellIndex c) const {
   return {origin_m_.x() + (c.col + 0.5) * cell_m_, origin_m_.y() + (c.row + 0.5) * cell_m_};
 }
 
+Eigen::Vector2d GridGeometry::corner_of(CellIndex c) const {
+  return {origin_m_.x() + c.col * cell_m_, origin_m_.y() + c.row * cell_m_};
+}
+
 }  // namespace indoormap

@@ -121,7 +121,7 @@ ObjectScores evaluate_objects(const std::vector<EvalObject>& truth,
 }
 
 std::vector<RoomMatch> evaluate_rooms(const std::vector<TruthRoom>& truth,
-                                      const std::vector<Polygon2>& result) {
+                                      const std::vector<Polygon>& result) {
   std::vector<RoomMatch> out;
   for (std::size_t r = 0; r < result.size(); ++r) {
     RoomMatch m;
@@ -191,10 +191,10 @@ Eigen::Vector2d point(const json& j, const fs::path& path, const std::string& ke
   return {number(j[0], path, key + "[0]"), number(j[1], path, key + "[1]")};
 }
 
-Polygon2 polygon(const json& j, const fs::path& path, const std::string& key) {
+Polygon polygon(const json& j, const fs::path& path, const std::string& key) {
   if (!j.is_array()) bad(path, key, "expected a list of [x, y] points");
   if (j.size() > 1'000'000) bad(path, key, "more than 1,000,000 vertices");
-  Polygon2 poly;
+  Polygon poly;
   for (std::size_t i = 0; i < j.size(); ++i)
     poly.push_back(point(j[i], path, key + "[" + std::to_string(i) + "]"));
   if (poly.size() >= 2 && (poly.front() - poly.back()).norm() < 1e-12)
@@ -320,13 +320,13 @@ std::vector<EvalObject> read_objects_json_unguarded(const fs::path& path) {
   return out;
 }
 
-std::vector<Polygon2> read_room_geojson_unguarded(const fs::path& path) {
+std::vector<Polygon> read_room_geojson_unguarded(const fs::path& path) {
   const json j = parse_json_file(path);
   if (j.value("type", "") != "FeatureCollection")
     bad(path, "type", "expected \"FeatureCollection\"");
   const json& features = member(j, "features", path, "");
   if (!features.is_array()) bad(path, "features", "expected a list");
-  std::vector<Polygon2> out;
+  std::vector<Polygon> out;
   for (std::size_t i = 0; i < features.size(); ++i) {
     const std::string key = "features[" + std::to_string(i) + "]";
     const json& f = features[i];
@@ -351,7 +351,7 @@ std::vector<EvalObject> read_objects_json(const fs::path& path) {
   return guarded(path, [&] { return read_objects_json_unguarded(path); });
 }
 
-std::vector<Polygon2> read_room_geojson(const fs::path& path) {
+std::vector<Polygon> read_room_geojson(const fs::path& path) {
   return guarded(path, [&] { return read_room_geojson_unguarded(path); });
 }
 

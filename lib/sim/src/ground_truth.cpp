@@ -17,7 +17,7 @@ bool is_round(const Furniture& f) {
 }
 
 /// Sets every cell whose centre lies in poly to value.
-void paint(const GridGeometry& g, Grid<Cell>& cells, const Polygon2& poly, Cell value) {
+void paint(const GridGeometry& g, Grid<Cell>& cells, const Polygon& poly, Cell value) {
   const auto [lo, hi] = bounds(poly);
   const CellIndex a = g.cell_of(lo), b = g.cell_of(hi);
   for (int r = std::max(0, a.row); r <= std::min(g.height() - 1, b.row); ++r)

@@ -25,7 +25,7 @@ namespace {
 
 ordered_json xy(const Eigen::Vector2d& p) { return ordered_json::array({p.x(), p.y()}); }
 ordered_json xyz(const Eigen::Vector3d& p) { return ordered_json::array({p.x(), p.y(), p.z()}); }
-ordered_json poly_json(const Polygon2& poly) {
+ordered_json poly_json(const Polygon& poly) {
   ordered_json a = ordered_json::array();
   for (const auto& p : poly) a.push_back(xy(p));
   return a;

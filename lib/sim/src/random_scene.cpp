@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "indoormap/core/errors.hpp"
-#include "indoormap/sim/polygon.hpp"
+#include "indoormap/core/polygon.hpp"
 #include "indoormap/sim/simulate.hpp"
 
 namespace indoormap::sim {
@@ -17,7 +17,7 @@ using V2 = Eigen::Vector2d;
 
 /// Furniture placement inside one room, in the room's local axis-aligned frame.
 struct Planner {
-  Polygon2 polygon;
+  Polygon polygon;
   std::vector<std::pair<V2, V2>> taken;  // AABBs (min, max) incl. clearance
 
   bool inside(const V2& lo, const V2& hi) const {

@@ -7,7 +7,7 @@
 #include <set>
 
 #include "indoormap/core/errors.hpp"
-#include "indoormap/sim/polygon.hpp"
+#include "indoormap/core/polygon.hpp"
 
 namespace indoormap::sim {
 

@@ -13,7 +13,7 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-Solid prism(Polygon2 footprint, double z0, double z1, int furniture, int room = -1) {
+Solid prism(Polygon footprint, double z0, double z1, int furniture, int room = -1) {
   Solid s;
   s.shape = Solid::Shape::kPrism;
   s.footprint = std::move(footprint);
@@ -156,9 +156,9 @@ SceneGeometry build_geometry(const Scene& scene) {
           Solid& w = g.solids[k];
           if (w.furniture >= 0 || w.z0_m != 0.0 || w.z1_m <= o.bottom_m || !contains(w.footprint, centre)) continue;
           const Solid piece = w;
-          Polygon2 before = clip_halfplane(piece.footprint, f.u, s0);
-          Polygon2 after = clip_halfplane(piece.footprint, -f.u, -s1);
-          Polygon2 middle = clip_halfplane(clip_halfplane(piece.footprint, -f.u, -s0), f.u, s1);
+          Polygon before = clip_halfplane(piece.footprint, f.u, s0);
+          Polygon after = clip_halfplane(piece.footprint, -f.u, -s1);
+          Polygon middle = clip_halfplane(clip_halfplane(piece.footprint, -f.u, -s0), f.u, s1);
           std::vector<Solid> parts;
           if (before.size() >= 3) parts.push_back(prism(before, piece.z0_m, piece.z1_m, -1, piece.room));
           if (after.size() >= 3) parts.push_back(prism(after, piece.z0_m, piece.z1_m, -1, piece.room));

@@ -34,6 +34,19 @@ class GridGeometry {
   CellIndex cell_of(const Eigen::Vector2d& p_map) const;
   /// Map-frame centre of a cell.
   Eigen::Vector2d center_of(CellIndex c) const;
+  /// Map-frame lower-left corner of a cell (c may lie outside the grid: corners of the far edge).
+  Eigen::Vector2d corner_of(CellIndex c) const;
+  /// Continuous cell coordinates of a map-frame point: (0, 0) is the lower-left corner of cell
+  /// (0, 0), (0.5, 0.5) its centre; cell_of(p) == floor(to_cell_coords(p)).
+  Eigen::Vector2d to_cell_coords(const Eigen::Vector2d& p_map) const {
+    return (p_map - origin_m_) / cell_m_;
+  }
+  /// Inverse of to_cell_coords: the map-frame point at continuous cell coordinates v.
+  Eigen::Vector2d from_cell_coords(const Eigen::Vector2d& v) const {
+    return origin_m_ + v * cell_m_;
+  }
+  /// A length in metres as a (fractional) number of cells.
+  double to_cells(double length_m) const { return length_m / cell_m_; }
   bool contains(CellIndex c) const {
     return c.col >= 0 && c.row >= 0 && c.col < width_ && c.row < height_;
   }
@@ -56,9 +69,13 @@ struct Grid {
 
   Grid() = default;
   Grid(int w, int h, T fill = T{})
-      : width(w), height(h), data(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), fill) {}
+      : width(w),
+        height(h),
+        data(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), fill) {}
 
-  bool contains(int col, int row) const { return col >= 0 && row >= 0 && col < width && row < height; }
+  bool contains(int col, int row) const {
+    return col >= 0 && row >= 0 && col < width && row < height;
+  }
   T& at(int col, int row) { return data[static_cast<std::size_t>(row) * width + col]; }
   const T& at(int col, int row) const { return data[static_cast<std::size_t>(row) * width + col]; }
   T& at(CellIndex c) { return at(c.col, c.row); }

@@ -11,7 +11,7 @@
 
 #include "indoormap/core/cell.hpp"
 #include "indoormap/core/grid.hpp"
-#include "indoormap/sim/polygon.hpp"
+#include "indoormap/core/polygon.hpp"
 
 namespace indoormap::sim {
 
@@ -45,7 +45,7 @@ LayoutScores evaluate_layout(const GridGeometry& truth_geometry, const Grid<Cell
 struct EvalObject {
   std::string id;
   std::string type;  ///< truth: furniture type; result: optional label
-  Polygon2 footprint;
+  Polygon footprint;
   std::optional<double> z_min_m, z_max_m;
   bool on_floor = true;
 };
@@ -76,7 +76,7 @@ ObjectScores evaluate_objects(const std::vector<EvalObject>& truth, const std::v
 struct TruthRoom {
   std::string name;
   std::string kind;  ///< "room" or "corridor"
-  Polygon2 polygon;
+  Polygon polygon;
 };
 
 struct RoomMatch {
@@ -92,7 +92,7 @@ struct RoomMatch {
 
 /// Each result polygon is matched with the truth room it overlaps most (IoU, 2 cm raster); the
 /// Hausdorff distance is between the boundaries sampled every 1 cm.
-std::vector<RoomMatch> evaluate_rooms(const std::vector<TruthRoom>& truth, const std::vector<Polygon2>& result);
+std::vector<RoomMatch> evaluate_rooms(const std::vector<TruthRoom>& truth, const std::vector<Polygon>& result);
 
 // ---- Files -------------------------------------------------------------------------------------
 
@@ -112,6 +112,6 @@ Grid<Cell> read_layout_pgm(const std::filesystem::path& path, const GridGeometry
 /// angle_deg}, z_min_m, z_max_m}]}. length_m runs along angle_deg (counter-clockwise from +x).
 std::vector<EvalObject> read_objects_json(const std::filesystem::path& path);
 /// room.geojson: the Polygon features whose property "kind" is "room" (outer rings).
-std::vector<Polygon2> read_room_geojson(const std::filesystem::path& path);
+std::vector<Polygon> read_room_geojson(const std::filesystem::path& path);
 
 }  // namespace indoormap::sim

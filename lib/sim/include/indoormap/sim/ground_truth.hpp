@@ -6,7 +6,7 @@
 
 #include "indoormap/core/cell.hpp"
 #include "indoormap/core/grid.hpp"
-#include "indoormap/sim/polygon.hpp"
+#include "indoormap/core/polygon.hpp"
 #include "indoormap/sim/scene.hpp"
 #include "indoormap/sim/world.hpp"
 
@@ -15,7 +15,7 @@ namespace indoormap::sim {
 struct TruthItem {
   std::string id;
   FurnitureType type = FurnitureType::kBox;
-  Polygon2 footprint;  ///< scene frame, counter-clockwise
+  Polygon footprint;  ///< scene frame, counter-clockwise
   double z_min_m = 0.0, z_max_m = 0.0;
   bool on_floor = true;  ///< false for lamps hanging from the ceiling
   int room = -1;

@@ -12,9 +12,9 @@
 #include <string_view>
 #include <vector>
 
-namespace indoormap::sim {
+#include "indoormap/core/polygon.hpp"
 
-using Polygon2 = std::vector<Eigen::Vector2d>;
+namespace indoormap::sim {
 
 /// A door or window in one edge of a room polygon. The edge runs from polygon[edge] to
 /// polygon[(edge + 1) % n]; the opening spans [at_m - width_m/2, at_m + width_m/2] along it and
@@ -40,7 +40,7 @@ enum class RoomKind { kRoom, kCorridor };
 struct Room {
   std::string name;
   RoomKind kind = RoomKind::kRoom;
-  Polygon2 polygon;  ///< inner wall faces, scene frame, metres; either orientation
+  Polygon polygon;  ///< inner wall faces, scene frame, metres; either orientation
   double wall_thickness_m = 0.2;  ///< walls are the polygon's boundary extruded outward
   Ceiling ceiling;
   std::vector<Opening> doors;

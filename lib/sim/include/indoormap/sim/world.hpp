@@ -12,7 +12,7 @@
 #include <optional>
 #include <vector>
 
-#include "indoormap/sim/polygon.hpp"
+#include "indoormap/core/polygon.hpp"
 #include "indoormap/sim/scene.hpp"
 
 namespace indoormap::sim {
@@ -20,7 +20,7 @@ namespace indoormap::sim {
 struct Solid {
   enum class Shape { kPrism, kCylinder };
   Shape shape = Shape::kPrism;
-  Polygon2 footprint;  ///< prism: convex, counter-clockwise; cylinder: its 32-gon (for pictures)
+  Polygon footprint;  ///< prism: convex, counter-clockwise; cylinder: its 32-gon (for pictures)
   Eigen::Vector2d center_m = Eigen::Vector2d::Zero();  ///< cylinder
   double radius_m = 0.0;                                ///< cylinder
   double z0_m = 0.0, z1_m = 0.0;
@@ -30,7 +30,7 @@ struct Solid {
 
 /// A horizontal floor (z = 0) and / or a ceiling plane z = a + g . (x, y), over a polygon.
 struct Cap {
-  Polygon2 polygon;
+  Polygon polygon;
   bool floor = true;
   bool ceiling = true;
   double ceiling_a = 0.0;
@@ -41,7 +41,7 @@ struct Cap {
 struct SceneGeometry {
   std::vector<Solid> solids;  ///< wall pieces first, then furniture parts
   std::vector<Cap> caps;      ///< room floors / ceilings, then door floors
-  std::vector<Polygon2> door_floors;  ///< footprints cut out of walls by doors (free space)
+  std::vector<Polygon> door_floors;  ///< footprints cut out of walls by doors (free space)
 };
 
 /// Builds the solids of a scene (normalised with normalised(); checked with check_scene()).
