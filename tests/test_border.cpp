@@ -301,11 +301,50 @@ TEST(Border, HeavyBorderOfASquareIsARingAroundIt) {
   EXPECT_FALSE(heavy.at(15, 15));
   const auto mk = border::mark_border_components(lay, heavy);
   ASSERT_EQ(mk.components.size(), 1u);
-  EXPECT_EQ(mk.components[0].label, -6);
+  EXPECT_EQ(mk.components[0].label, border::kFirstLeeLabel);
   EXPECT_EQ(mk.components[0].switches, 2);
   EXPECT_EQ(mk.components[0].kind, border::ComponentKind::kRing);
-  EXPECT_EQ(mk.lee.at(15, 15), -4);
-  EXPECT_EQ(mk.lee.at(0, 0), -5);
+  EXPECT_EQ(mk.lee.at(15, 15), border::lee_value(border::LeeMark::kRoom));
+  EXPECT_EQ(mk.lee.at(0, 0), border::lee_value(border::LeeMark::kVirgin));
+  EXPECT_TRUE(border::is_lee_label(mk.lee.at(7, 15)));
+  // Tracing writes the opening lines on the mid-line (row 14 of the ring's rows 7 .. 22) and the
+  // wave into the ring.
+  Grid<std::int32_t> lee = mk.lee;
+  const border::RingTrace t = border::trace_ring(lee, mk.components[0]);
+  ASSERT_TRUE(t) << t.why;
+  EXPECT_TRUE(t.why.empty());
+  EXPECT_GE(t.chain.size(), 4u);
+  EXPECT_EQ(lee.at(7, 14), border::lee_value(border::LeeMark::kOpenStart));
+  EXPECT_EQ(lee.at(7, 13), border::lee_value(border::LeeMark::kOpenEnd));
+  EXPECT_EQ(lee.at(7, 15), 1);  // the wave starts beside the opening line
+  EXPECT_TRUE(border::is_lee_distance(lee.at(15, 22)));
+}
+
+TEST(Border, TraceRingGivesTheReasonWhenTheRingIsBroken) {
+  Grid<Cell> lay(30, 30, Cell::kUnknown);
+  for (int r = 10; r < 20; ++r)
+    for (int c = 10; c < 20; ++c)
+      lay.at(c, r) = (r == 10 || r == 19 || c == 10 || c == 19) ? Cell::kWall : Cell::kFree;
+  auto mk = border::mark_border_components(lay, border::heavy_border(lay));
+  ASSERT_EQ(mk.components.size(), 1u);
+  for (int r = 15; r < 30; ++r)  // cut the ring's top side (rows 19 .. 22) at column 15
+    if (mk.lee.at(15, r) == mk.components[0].label)
+      mk.lee.at(15, r) = border::lee_value(border::LeeMark::kVirgin);
+  const border::RingTrace t = border::trace_ring(mk.lee, mk.components[0]);
+  EXPECT_FALSE(t);
+  EXPECT_TRUE(t.chain.empty());
+  EXPECT_NE(t.why.find("broken"), std::string::npos) << t.why;
+}
+
+TEST(Border, FaceFitThresholdsInMetresAreTheTunedCellCountsAtTheDefaultCell) {
+  const border::BorderParams p;
+  const GridGeometry geo({0, 0}, 0.05, 1, 1);
+  EXPECT_EQ(geo.to_cells(p.face_out_reach_m), 4.0);
+  EXPECT_EQ(geo.to_cells(p.chamfer_margin_m), 4.0);
+  EXPECT_EQ(geo.to_cells(p.recess_margin_m), 4.0);
+  // 1.5 cells: no double gives exactly 1.5 at 0.05 m; 0.075 m gives the double just below.
+  for (const double v : {p.face_in_margin_m, p.face_tol_m, p.shadow_chain_tol_m})
+    EXPECT_DOUBLE_EQ(geo.to_cells(v), 1.5);
 }
 
 TEST(Border, PropertiesOnManyGeneratedRooms) {
@@ -594,7 +633,18 @@ TEST(Border, BrokenPreconditionsThrowTypedErrors) {
   p = {};
   p.door_min_m = 2.0;
   p.door_max_m = 1.0;
-  EXPECT_THROW(border::validate(p), UsageError);
+  EXPECT_THROW(p.validate(), UsageError);
+  p = {};
+  p.face_tol_m = 0;
+  try {
+    p.validate();
+    ADD_FAILURE() << "face_tol_m = 0 passed";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("border.face_tol_m"), std::string::npos) << e.what();
+  }
+  p = {};
+  p.corner_shadow_min_turn_deg = 130;  // above the maximum
+  EXPECT_THROW(border::close_border(lay, GridGeometry({0, 0}, kCell, 10, 10), {}, p), UsageError);
   p = {};
   p.max_cells = 50;
   EXPECT_THROW(border::close_border(lay, GridGeometry({0, 0}, kCell, 10, 10), {}, p), BudgetError);

@@ -103,6 +103,18 @@ void visit(PipelineConfig& c, F&& f) {
   f("border", "door_probe_m", bd.door_probe_m);
   f("border", "max_open_fraction", bd.max_open_fraction);
   f("border", "max_cells", bd.max_cells);
+  f("border", "face_out_reach_m", bd.face_out_reach_m);
+  f("border", "face_in_margin_m", bd.face_in_margin_m);
+  f("border", "face_tol_m", bd.face_tol_m);
+  f("border", "face_max_turn_deg", bd.face_max_turn_deg);
+  f("border", "same_face_max_deg", bd.same_face_max_deg);
+  f("border", "parallel_max_deg", bd.parallel_max_deg);
+  f("border", "chamfer_margin_m", bd.chamfer_margin_m);
+  f("border", "recess_margin_m", bd.recess_margin_m);
+  f("border", "shadow_min_unknown_share", bd.shadow_min_unknown_share);
+  f("border", "shadow_chain_tol_m", bd.shadow_chain_tol_m);
+  f("border", "corner_shadow_min_turn_deg", bd.corner_shadow_min_turn_deg);
+  f("border", "corner_shadow_max_turn_deg", bd.corner_shadow_max_turn_deg);
   visit_plan(c.plan, f);
 }
 

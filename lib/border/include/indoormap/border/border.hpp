@@ -4,18 +4,18 @@
 // polygon in map metres, and the list of the openings (doors, scan gaps) it runs across.
 //
 // Steps: (1) the heavy border: the marked cells of M_r dilated (full 5x5, then a 3x3 cross),
-// minus that dilation eroded twice (full 5x5); (2) M_Lee: -1 border, -4 room space, -5 virgin;
+// minus that dilation eroded twice (full 5x5); (2) M_Lee (LeeMark): border, room space, virgin;
 // (3) 8-connected components of the border with their bounding boxes, classified by counting the
-// "switches" along their horizontal mid-line; (4) for every ring: opening lines -2 / -3, the Lee
-// wave around the ring, the backward pass preferring cells that touch room space; (5) the ring
-// whose polygon contains the scanner is the room border; (6) openings, and the polygon fitted to
-// the wall faces beside the chain, with its area and perimeter.
+// "switches" along their horizontal mid-line; (4) for every ring: opening lines (kOpenStart /
+// kOpenEnd), the Lee wave around the ring, the backward pass preferring cells that touch room
+// space; (5) the ring whose polygon contains the scanner is the room border; (6) openings, and the
+// polygon fitted to the wall faces beside the chain, with its area and perimeter.
 #include <Eigen/Core>
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <vector>
 
+#include "indoormap/border/params.hpp"
 #include "indoormap/border/polygon.hpp"
 #include "indoormap/core/cell.hpp"
 #include "indoormap/core/grid.hpp"
@@ -26,39 +26,29 @@ struct MapResult;
 
 namespace indoormap::border {
 
-struct BorderParams {
-  int dilate_full_size = 5;   ///< [cells] side of the full square dilation element (odd; 1 = skip)
-  int dilate_cross_size = 3;  ///< [cells] side of the cross-shaped dilation element (odd; 1 = skip)
-  int erode_full_size = 5;    ///< [cells] side of the full square erosion element (odd, >= 3)
-  int erode_iterations = 2;   ///< erosions with that element (>= 1)
-  double simplify_tolerance_m = 0.05;  ///< [m] Douglas-Peucker tolerance of polygon_m (0 = raw)
-  /// [m] the chain runs at the back of the wall; the polygon is fitted to the wall faces found up
-  /// to this far inside the chain polygon (0 = off: polygon_m is the chain polygon).
-  double face_snap_max_m = 0.3;
-  /// [m] the polygon runs straight along a wall across the shadow of an object standing in the
-  /// room (an inward detour of the chain round a mostly unknown region, both ends on one wall
-  /// face, flanks without wall faces) at most this wide along the wall and deep across it. A 0.6 m
-  /// pillar 1 m before the wall, seen from 1-2 m, hides 0.9-1.2 m of it. A shadow over a convex
-  /// corner of the room is bridged to the two walls' crossing when that lies at most this far
-  /// beyond the shadow's ends along both walls (0 = off).
-  double shadow_max_m = 2.0;
-  /// [m] a chain cell is closed when a wall or furniture cell lies within this distance of it;
-  /// chain cells with none are open (the chain runs at the back of the wall, sometimes a cell off).
-  double opening_search_m = 0.2;
-  double opening_min_m = 0.3;  ///< [m] narrower gaps between obstacles are not reported
-  double door_min_m = 0.6;     ///< [m] openings this wide or wider are door candidates ...
-  double door_max_m = 1.2;     ///< [m] ... up to this width
-  /// [m] above the floor (used by the MapResult overload only): an obstacle cell whose voxel
-  /// column is empty from the furniture band's bottom up to this height is open below, e.g. a
-  /// door under its lintel, which the wall and furniture bands both see as an obstacle.
-  double door_clear_height_m = 1.8;
-  double door_probe_m =
-      3.0;  ///< [m] how far beyond such a cell a ray looks for points seen through it
-  /// A ring whose openings add up to more than this share of its perimeter is not a room border
-  /// (an open scan): closed = false, with the reason; chain and polygon are still given.
-  double max_open_fraction = 0.4;
-  std::int64_t max_cells = 100'000'000;  ///< refuse larger layouts before allocating
+/// The marks of M_Lee (paper 3.2.C): the values of BorderResult::lee / LeeMarking::lee that are
+/// not component labels (kFirstLeeLabel, kFirstLeeLabel - 1, ...) or wave distances (> 0).
+enum class LeeMark : std::int32_t {
+  kBorder = -1,     ///< heavy border, before the components are labelled
+  kOpenStart = -2,  ///< the opening line of a traced ring, which the wave must not cross
+  kOpenEnd = -3,    ///< the line beside it that marks the end of the wave's path
+  kRoom = -4,       ///< marked (not unknown) cell outside the heavy border: room space
+  kVirgin = -5,     ///< unknown cell outside the heavy border
 };
+/// The M_Lee label of the first border component; the i-th (0-based) has kFirstLeeLabel - i.
+inline constexpr std::int32_t kFirstLeeLabel = -6;
+/// The M_Lee value of a mark.
+constexpr std::int32_t lee_value(LeeMark m) {
+  return static_cast<std::int32_t>(m);
+}
+/// Whether an M_Lee value is a component label (of a cell the wave did not reach).
+constexpr bool is_lee_label(std::int32_t v) {
+  return v <= kFirstLeeLabel;
+}
+/// Whether an M_Lee value is a wave distance (1 at the start of the wave).
+constexpr bool is_lee_distance(std::int32_t v) {
+  return v > 0;
+}
 
 /// What a border component was classified as.
 enum class ComponentKind : std::uint8_t {
@@ -68,9 +58,9 @@ enum class ComponentKind : std::uint8_t {
 };
 std::string_view to_string(ComponentKind k);
 
-/// One 8-connected component of the heavy border (M_Lee label -6, -7, ...).
+/// One 8-connected component of the heavy border (M_Lee label kFirstLeeLabel, ... - 1, ...).
 struct BorderComponent {
-  int label = 0;           ///< M_Lee label (negative, from -6 down)
+  int label = 0;           ///< M_Lee label (negative, from kFirstLeeLabel down)
   CellIndex start;         ///< first cell in row-major scan order
   CellIndex min, max;      ///< inclusive bounding box
   std::int64_t cells = 0;  ///< cell count
@@ -119,27 +109,33 @@ struct BorderResult {
   std::vector<std::string> warnings;
   // Intermediate maps (same size as the layout), for pictures and inspection.
   Grid<std::uint8_t> heavy;  ///< step 1: 1 = heavy border
-  Grid<std::int32_t> lee;    ///< M_Lee after the waves: -1..-5 marks, labels, wave distances > 0
+  Grid<std::int32_t> lee;    ///< M_Lee after the waves: LeeMark values, labels, wave distances
 };
 
 /// Step 1: the heavy border of the marked (non-unknown) cells of the layout. Throws UsageError
 /// for invalid structuring elements.
 Grid<std::uint8_t> heavy_border(const Grid<Cell>& layout, const BorderParams& params = {});
 
-/// Steps 2-3: M_Lee (-1 border, -4 room space, -5 virgin; border cells then relabelled -6, -7,
-/// ... per 8-connected component) and the components with bounding boxes and switch counts.
-/// Components with two or more switches are returned as kRing candidates, others as kObject.
+/// Steps 2-3: M_Lee (LeeMark::kRoom, kVirgin; the heavy border's cells then labelled
+/// kFirstLeeLabel, kFirstLeeLabel - 1, ... per 8-connected component) and the components with
+/// bounding boxes and switch counts. Components with two or more switches are returned as kRing
+/// candidates, others as kObject.
 struct LeeMarking {
   Grid<std::int32_t> lee;
   std::vector<BorderComponent> components;
 };
 LeeMarking mark_border_components(const Grid<Cell>& layout, const Grid<std::uint8_t>& heavy);
 
-/// Step 4 for one ring candidate: opening lines, Lee wave, backward pass. Writes the wave into
-/// lee and returns the closed chain (counter-clockwise), or nullopt with the reason in *why.
-std::optional<std::vector<CellIndex>> trace_ring(Grid<std::int32_t>& lee,
-                                                 const BorderComponent& comp,
-                                                 std::string* why = nullptr);
+/// What tracing one ring candidate gave: the closed chain, or why there is none.
+struct RingTrace {
+  std::vector<CellIndex> chain;  ///< counter-clockwise, at least 4 cells; empty when it failed
+  std::string why;               ///< why the ring could not be closed (empty when it was)
+  explicit operator bool() const { return !chain.empty(); }
+};
+
+/// Step 4 for one ring candidate: opening lines (LeeMark::kOpenStart / kOpenEnd), Lee wave,
+/// backward pass. Writes the lines and the wave into lee (the grid of mark_border_components).
+RingTrace trace_ring(Grid<std::int32_t>& lee, const BorderComponent& comp);
 
 /// The whole closure. scanners_map: scanner positions (map metres); the room border is the
 /// smallest closed ring whose polygon contains the first scanner that lies inside any ring.
@@ -163,8 +159,5 @@ BorderResult close_border(const layout::MapResult& map, const BorderParams& para
 Grid<std::uint8_t> open_below_mask(const layout::MapResult& map,
                                    const std::vector<Eigen::Vector2d>& scanners_map,
                                    const BorderParams& params = {});
-
-/// Throws UsageError naming the field ("border.door_min_m: ...") for invalid parameters.
-void validate(const BorderParams& params);
 
 }  // namespace indoormap::border
