@@ -199,8 +199,9 @@ std::string fmt_m(double v) {
 // layers between 0.5 m above the floor and min_layer: where a sloped ceiling begins.
 std::optional<std::int64_t> ceiling_onset(const std::vector<std::int64_t>& h,
                                           std::int64_t floor_layer, std::int64_t min_layer,
-                                          std::int64_t last, double cell_m, double factor) {
-  const std::int64_t lo = floor_layer + static_cast<std::int64_t>(std::ceil(0.5 / cell_m));
+                                          std::int64_t last, const VoxelGeometry& g,
+                                          double factor) {
+  const std::int64_t lo = floor_layer + static_cast<std::int64_t>(std::ceil(g.to_cells(0.5)));
   if (min_layer - lo < 3 || min_layer > last) return std::nullopt;
   std::vector<std::int64_t> walls(h.begin() + lo, h.begin() + min_layer);
   std::nth_element(walls.begin(), walls.begin() + static_cast<std::ptrdiff_t>(walls.size() / 2),
@@ -270,7 +271,7 @@ LayerAnalysis analyse_layers(const VoxelGrid& g, const LayerParams& p) {
       a.ceiling_found = true;
       a.ceiling_layer = z;
       a.ceiling_z_m = g.layer_center_m(z);
-    } else if (auto onset = ceiling_onset(h, a.floor_layer, min_ceiling_layer, last, g.cell_m,
+    } else if (auto onset = ceiling_onset(h, a.floor_layer, min_ceiling_layer, last, g,
                                           p.ceiling_onset_factor)) {
       a.ceiling_found = true;
       a.ceiling_sloped = true;
