@@ -11,7 +11,7 @@
 #include <optional>
 
 #include "indoormap/border/border.hpp"
-#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud_io/load.hpp"
 #include "indoormap/layout/pipeline.hpp"
 
 using namespace indoormap;
@@ -25,7 +25,7 @@ const layout::MapResult* jacobs() {
     if (const char* env = std::getenv("INDOORMAP_DATA"); env && *env) dir = env;
     dir /= "jacobs-thermocolorlab";
     if (!std::filesystem::exists(dir)) return std::nullopt;
-    auto loaded = cloud::load_clouds({dir.string()}, {});
+    auto loaded = cloud_io::load_clouds({dir.string()}, {});
     return layout::make_map(std::move(loaded.cloud), {});
   }();
   return m ? &*m : nullptr;

@@ -13,7 +13,7 @@
 #include <optional>
 #include <random>
 
-#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud_io/load.hpp"
 #include "indoormap/layout/pipeline.hpp"
 #include "indoormap/objects/label.hpp"
 #include "indoormap/objects/objects.hpp"
@@ -29,7 +29,7 @@ const layout::MapResult* jacobs() {
     if (const char* env = std::getenv("INDOORMAP_DATA"); env && *env) dir = env;
     dir /= "jacobs-thermocolorlab";
     if (!std::filesystem::exists(dir)) return std::nullopt;
-    auto loaded = cloud::load_cloud(dir.string());
+    auto loaded = cloud_io::load_cloud(dir.string());
     return layout::make_map(std::move(loaded.cloud), {});
   }();
   return m ? &*m : nullptr;

@@ -13,8 +13,8 @@
 
 #include "indoormap/cloud/ghosts.hpp"
 #include "indoormap/cloud/level.hpp"
-#include "indoormap/cloud/load.hpp"
 #include "indoormap/cloud/voxel.hpp"
+#include "indoormap/cloud_io/load.hpp"
 #include "indoormap/layout/pipeline.hpp"
 #include "synthetic.hpp"
 
@@ -48,7 +48,7 @@ const Inputs& inputs() {
     r.shuffled = r.big;
     std::shuffle(r.shuffled.begin(), r.shuffled.end(), std::mt19937(9));
     if (std::filesystem::exists(jacobs_dir())) {
-      auto loaded = cloud::load_cloud(jacobs_dir().string());
+      auto loaded = cloud_io::load_cloud(jacobs_dir().string());
       r.jacobs_raw = loaded.cloud.points;
       auto lv = cloud::estimate_level(loaded.cloud.points, {});
       cloud::rotate(loaded.cloud, lv.map_from_input);
@@ -75,7 +75,7 @@ void BM_LoadJacobs(benchmark::State& st) {
     return (void)st.SkipWithError("Jacobs data not found");
   std::size_t n = 0;
   for (auto _ : st) {
-    auto r = cloud::load_cloud(jacobs_dir().string());
+    auto r = cloud_io::load_cloud(jacobs_dir().string());
     n = r.cloud.points.size();
     benchmark::DoNotOptimize(r.cloud.points.data());
   }

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <random>
 
-#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud_io/load.hpp"
 #include "indoormap/layout/pipeline.hpp"
 #include "indoormap/planning/planner.hpp"
 
@@ -41,7 +41,7 @@ const Scene& jacobs() {
   static const Scene s = [] {
     const auto dir = std::filesystem::path(INDOORMAP_SOURCE_DIR) / ".." / "shared" / "data" / "jacobs-thermocolorlab";
     if (!std::filesystem::exists(dir)) return synthetic(200);
-    auto loaded = cloud::load_clouds({dir.string()}, {});
+    auto loaded = cloud_io::load_clouds({dir.string()}, {});
     const auto m = layout::make_map(std::move(loaded.cloud), {});
     return Scene{m.layout.layout, m.geometry, {{-1.2, 0.1}, 0.0}, {{2.6, -1.6}, std::nullopt}};
   }();

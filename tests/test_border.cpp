@@ -14,7 +14,7 @@
 #include <set>
 
 #include "indoormap/border/border.hpp"
-#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud_io/load.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/layout/pipeline.hpp"
 #include "indoormap/sim/eval.hpp"
@@ -652,7 +652,7 @@ TEST(Border, BrokenPreconditionsThrowTypedErrors) {
 
 TEST(BorderJacobs, OneClosedRoughlyRectangularPolygonWithTheDoor) {
   INDOORMAP_REQUIRE_DATA(dir, "jacobs-thermocolorlab");
-  auto loaded = cloud::load_clouds({dir.string()}, {});
+  auto loaded = cloud_io::load_clouds({dir.string()}, {});
   const auto m = layout::make_map(std::move(loaded.cloud), {});
   const auto r = border::close_border(m);
   expect_valid_chain(r, "jacobs");

@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "indoormap/core/errors.hpp"
 #include "indoormap/layout/layout.hpp"
+#include "indoormap/layout/pipeline.hpp"
 
 using namespace indoormap;
 using namespace indoormap::layout;
@@ -315,4 +317,17 @@ TEST(Layout, SpeckledCabinetFaceStopsTheFlood) {
   paper.flood_barrier_closing = 0;
   r = build_layout(walls, furn, geo_for(walls), {{4.5, 1.5}}, paper);
   EXPECT_EQ(r.layout.at(2, 4), Cell::kFree);
+}
+
+// make_map checks the cloud parameters (their validate()) before any work.
+TEST(MakeMap, ValidatesTheCloudParametersFirst) {
+  PointCloud cloud;  // empty: any stage would fail with an InputError
+  MapParams p;
+  p.ghosts.end_skip_m = -0.1;
+  try {
+    make_map(cloud, p);
+    FAIL() << "no UsageError";
+  } catch (const UsageError& e) {
+    EXPECT_EQ(std::string(e.what()), "invalid parameter ghosts.end_skip_m: must be >= 0");
+  }
 }

@@ -7,17 +7,17 @@
 #include <limits>
 #include <vector>
 
-#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud_io/load.hpp"
 #include "indoormap/core/errors.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;
 using indoormap::BudgetError;
 using indoormap::InputError;
-using indoormap::cloud::load_cloud;
-using indoormap::cloud::load_clouds;
-using indoormap::cloud::LoadOptions;
-using indoormap::cloud::UpAxis;
+using indoormap::cloud_io::load_cloud;
+using indoormap::cloud_io::load_clouds;
+using indoormap::cloud_io::LoadOptions;
+using indoormap::cloud_io::UpAxis;
 using indoormap::test::scratch_dir;
 using indoormap::test::write_text;
 
@@ -183,7 +183,7 @@ TEST(LoadPcd, BinaryCompressed) {
 
 TEST(LoadPcd, HeaderParsedAndValidated) {
   const std::string bytes = binary_pcd();
-  const auto h = indoormap::cloud::read_pcd_header(bytes, "b.pcd", 1000);
+  const auto h = indoormap::cloud_io::read_pcd_header(bytes, "b.pcd", 1000);
   EXPECT_EQ(h.fields, (std::vector<std::string>{"x", "y", "z", "label"}));
   EXPECT_EQ(h.sizes, (std::vector<int>{4, 4, 8, 1}));
   EXPECT_EQ(h.types, (std::vector<char>{'F', 'F', 'F', 'U'}));
@@ -193,7 +193,7 @@ TEST(LoadPcd, HeaderParsedAndValidated) {
   EXPECT_TRUE(h.has_viewpoint);
   EXPECT_EQ(h.viewpoint[0], 0.5);
   EXPECT_EQ(h.data_offset, bytes.size() - 3 * 17);
-  EXPECT_THROW(indoormap::cloud::read_pcd_header(bytes, "b.pcd", 2), BudgetError);
+  EXPECT_THROW(indoormap::cloud_io::read_pcd_header(bytes, "b.pcd", 2), BudgetError);
 }
 
 // ---------------------------------------------------------------------------------------- PLY
@@ -375,10 +375,10 @@ TEST(Load3dtk, FramesPreferredOverPoseAndScanRange) {
 
 TEST(Load3dtk, PoseMatrixConvention) {
   const double t[3] = {1, 2, 3}, zero[3] = {0, 0, 0}, ry[3] = {0, 90, 0};
-  auto m = indoormap::cloud::tdtk_pose_to_matrix(t, zero);
+  auto m = indoormap::cloud_io::tdtk_pose_to_matrix(t, zero);
   const std::array<double, 16> id = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 2, 3, 1};
   for (int i = 0; i < 16; ++i) EXPECT_NEAR(m[i], id[i], 1e-15) << i;
-  m = indoormap::cloud::tdtk_pose_to_matrix(zero, ry);
+  m = indoormap::cloud_io::tdtk_pose_to_matrix(zero, ry);
   const std::array<double, 16> y90 = {0, 0, -1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0, 0, 0, 1};
   for (int i = 0; i < 16; ++i) EXPECT_NEAR(m[i], y90[i], 1e-15) << i;
 }
@@ -397,7 +397,7 @@ TEST(Load3dtkRealData, PoseEqualsFramesForAllSectors) {
     std::istringstream ls(last);
     std::array<double, 16> f;
     for (auto& v : f) ASSERT_TRUE(ls >> v) << stem;
-    const auto m = indoormap::cloud::tdtk_pose_to_matrix(t, e);
+    const auto m = indoormap::cloud_io::tdtk_pose_to_matrix(t, e);
     for (int i = 0; i < 16; ++i) EXPECT_NEAR(m[i], f[i], 1e-4) << stem << " element " << i;
   }
 }

@@ -4,7 +4,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud_io/load.hpp"
 #include "indoormap/layout/pipeline.hpp"
 #include "indoormap/objects/objects.hpp"
 #include "test_support.hpp"
@@ -14,7 +14,7 @@ using namespace indoormap;
 namespace {
 
 struct Jacobs {
-  cloud::LoadResult loaded;
+  cloud_io::LoadResult loaded;
   layout::MapResult map;
 };
 
@@ -24,7 +24,7 @@ const Jacobs* jacobs() {
     auto root = test::shared_data_dir();
     if (!root || !std::filesystem::exists(*root / "jacobs-thermocolorlab")) return nullptr;
     auto* r = new Jacobs;
-    r->loaded = cloud::load_cloud((*root / "jacobs-thermocolorlab").string());
+    r->loaded = cloud_io::load_cloud((*root / "jacobs-thermocolorlab").string());
     r->map = layout::make_map(r->loaded.cloud, {});
     return r;
   }();

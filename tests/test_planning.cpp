@@ -10,7 +10,7 @@
 #include <random>
 #include <set>
 
-#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud_io/load.hpp"
 #include "indoormap/io/map_io.hpp"
 #include "indoormap/layout/pipeline.hpp"
 #include "indoormap/planning/planner.hpp"
@@ -433,7 +433,7 @@ void expect_routes(const Grid<Cell>& cells, const GridGeometry& geo,
 
 TEST(PlanningRealData, JacobsRoomRoutes) {
   INDOORMAP_REQUIRE_DATA(dir, "jacobs-thermocolorlab");
-  auto loaded = cloud::load_clouds({dir.string()}, {});
+  auto loaded = cloud_io::load_clouds({dir.string()}, {});
   const auto m = layout::make_map(std::move(loaded.cloud), {});
   expect_routes(m.layout.layout, m.geometry,
                 {{{{-1.2, 0.1}, 0.0}, {{2.6, -1.6}, {}}},

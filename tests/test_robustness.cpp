@@ -6,7 +6,7 @@
 
 #include <cstring>
 
-#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud_io/load.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/io/map_io.hpp"
 #include "test_support.hpp"
@@ -333,7 +333,7 @@ TEST(LoaderRefuses, PlyEmptyElementWithHugeCountIsSkippedNotLooped) {
   const auto dir = test::scratch_dir();
   test::write_text(dir / "e.ply", "ply\nformat ascii 1.0\nelement pad 18446744073709551615\n" +
                                       ply("ascii", 1).substr(21) + "1 2 3\n");
-  const auto r = cloud::load_cloud((dir / "e.ply").string());
+  const auto r = cloud_io::load_cloud((dir / "e.ply").string());
   ASSERT_EQ(r.cloud.points.size(), 1u);
 }
 

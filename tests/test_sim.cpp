@@ -7,7 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
-#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud_io/load.hpp"
+#include "indoormap/cloud_io/write.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/sim/eval.hpp"
 #include "indoormap/sim/ground_truth.hpp"
@@ -411,7 +412,7 @@ TEST(SimTruth, PgmRowsRunNorthUpAndReadBack) {
 TEST(SimOutput, BinaryPcdHeaderAndData) {
   const fs::path dir = test::scratch_dir();
   std::vector<Eigen::Vector3f> pts = {{1, 2, 3}, {-0.5f, 0.25f, 4}};
-  cloud::write_pcd_binary((dir / "c.pcd").string(), pts, {0.5, 1.5, 1.25});
+  cloud_io::write_pcd_binary((dir / "c.pcd").string(), pts, {0.5, 1.5, 1.25});
   const std::string b = test::read_text(dir / "c.pcd");
   const std::string header =
       "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n"
@@ -505,8 +506,8 @@ TEST(SimOutput, TdtkExportReadsBackAsTheSamePoints) {
   const fs::path dir = test::scratch_dir();
   const auto r = test::run_app("scene-sim", "--random --seed 9 --rooms 2 --step-deg 0.8 --3dtk --sector-deg 40 -q -o " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto pcd = cloud::load_cloud((dir / "cloud.pcd").string());
-  const auto tdtk = cloud::load_cloud((dir / "3dtk").string());
+  const auto pcd = cloud_io::load_cloud((dir / "cloud.pcd").string());
+  const auto tdtk = cloud_io::load_cloud((dir / "3dtk").string());
   ASSERT_EQ(pcd.cloud.points.size(), tdtk.cloud.points.size());
   ASSERT_GT(pcd.cloud.points.size(), 1000u);
   for (std::size_t i = 0; i < pcd.cloud.points.size(); ++i)

@@ -64,7 +64,8 @@ planning::Pose2 parse_pose(const std::string& text, const std::string& option) {
 PipelineConfig resolve_config(const PipelineCli& cli) {
   PipelineConfig c;
   if (!cli.config_file.empty()) merge_config_file(c, cli.config_file);
-  if (!cli.up_axis.empty()) c.load.up_axis = cli.up_axis == "y" ? cloud::UpAxis::kY : cloud::UpAxis::kZ;
+  if (!cli.up_axis.empty())
+    c.load.up_axis = cli.up_axis == "y" ? cloud_io::UpAxis::kY : cloud_io::UpAxis::kZ;
   if (!cli.unit.empty()) {
     if (cli.unit == "m") c.load.unit_m = 1.0;
     else if (cli.unit == "cm") c.load.unit_m = 0.01;

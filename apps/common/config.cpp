@@ -118,8 +118,8 @@ void visit(PipelineConfig& c, F&& f) {
   visit_plan(c.plan, f);
 }
 
-std::string axis_name(cloud::UpAxis a) {
-  return a == cloud::UpAxis::kY ? "y" : "z";
+std::string axis_name(cloud_io::UpAxis a) {
+  return a == cloud_io::UpAxis::kY ? "y" : "z";
 }
 
 struct Reader {
@@ -144,12 +144,12 @@ struct Reader {
         const auto k = n.as<int>();
         if (k != 4 && k != 8) fail(full, n, "expected 4 or 8");
         v = k == 4 ? objects::Connectivity::k4 : objects::Connectivity::k8;
-      } else if constexpr (std::is_same_v<T, cloud::UpAxis>) {
+      } else if constexpr (std::is_same_v<T, cloud_io::UpAxis>) {
         const auto s = n.as<std::string>();
         if (s == "z")
-          v = cloud::UpAxis::kZ;
+          v = cloud_io::UpAxis::kZ;
         else if (s == "y")
-          v = cloud::UpAxis::kY;
+          v = cloud_io::UpAxis::kY;
         else
           fail(full, n, "expected 'z' or 'y', got '" + s + "'");
       } else if constexpr (std::is_same_v<T, std::optional<double>>) {
@@ -234,47 +234,12 @@ void validate(const PipelineConfig& c) {
   auto require = [](bool ok, const std::string& what) {
     if (!ok) throw UsageError("invalid parameter " + what);
   };
-  require(c.load.unit_m > 0 && std::isfinite(c.load.unit_m), "input.unit_m: must be > 0");
-  require(c.load.max_points > 0, "input.max_points: must be > 0");
+  cloud_io::validate(c.load);  // throws UsageError naming input.<key>
   for (const auto& s : c.scanners) require(s.allFinite(), "input.scanners: must be finite");
-  const auto& lv = c.map.level;
-  require(lv.max_tilt_deg > 0 && lv.max_tilt_deg < 90, "level.max_tilt_deg: must be in (0, 90)");
-  require(lv.band_m > 0, "level.band_m: must be > 0");
-  require(lv.peak_fraction > 0 && lv.peak_fraction <= 1, "level.peak_fraction: must be in (0, 1]");
-  require(lv.inlier_m > 0, "level.inlier_m: must be > 0");
-  require(lv.iterations > 0 && lv.iterations <= 100000, "level.iterations: must be in [1, 100000]");
-  require(lv.sample_points >= 3 && lv.sample_points <= 100'000'000,
-          "level.sample_points: must be in [3, 1e8]");
-  require(lv.min_fill >= 0 && lv.min_fill <= 1, "level.min_fill: must be in [0, 1]");
-  const auto& vx = c.map.voxel;
-  require(vx.cell_m >= 0.001 && vx.cell_m <= 10, "voxel.cell_m: must be in [0.001, 10] m");
-  require(vx.max_cells > 0, "voxel.max_cells: must be > 0");
-  require(vx.bounds_gap_m > 0, "voxel.bounds_gap_m: must be > 0");
-  require(vx.bounds_sample > 0 && vx.bounds_sample <= 100'000'000,
-          "voxel.bounds_sample: must be in [1, 1e8]");
-  const auto& gh = c.map.ghosts;
-  require(gh.max_points >= 1 && gh.max_points <= 65535, "ghosts.max_points: must be in [1, 65535]");
-  require(gh.min_pass_ratio > 0, "ghosts.min_pass_ratio: must be > 0");
-  require(gh.min_passes >= 1, "ghosts.min_passes: must be >= 1");
-  require(gh.min_layer_offset >= 0, "ghosts.min_layer_offset: must be >= 0");
-  require(gh.end_skip_m >= 0, "ghosts.end_skip_m: must be >= 0");
-  require(gh.max_rays >= 1 && gh.max_rays <= 1'000'000'000, "ghosts.max_rays: must be in [1, 1e9]");
-  const auto& ly = c.map.layers;
-  require(ly.min_points_per_voxel >= 1 && ly.min_points_per_voxel <= 65535,
-          "layers.min_points_per_voxel: must be in [1, 65535]");
-  require(ly.isolated_min_points >= 1, "layers.isolated_min_points: must be >= 1");
-  require(ly.floor_min_fraction > 0 && ly.floor_min_fraction <= 1,
-          "layers.floor_min_fraction: must be in (0, 1]");
-  require(ly.ceiling_min_fraction > 0 && ly.ceiling_min_fraction <= 1,
-          "layers.ceiling_min_fraction: must be in (0, 1]");
-  require(ly.wall_band_m > 0, "layers.wall_band_m: must be > 0");
-  require(ly.wall_min_extent_m >= 0 && ly.wall_min_extent_m <= ly.wall_band_m,
-          "layers.wall_min_extent_m: must be in [0, layers.wall_band_m]");
-  require(ly.furniture_max_height_m > 0, "layers.furniture_max_height_m: must be > 0");
-  require(ly.ceiling_onset_factor > 1, "layers.ceiling_onset_factor: must be > 1");
-  require(ly.min_room_height_m >= 0, "layers.min_room_height_m: must be >= 0");
-  require(ly.floor_clearance_m >= 0 && ly.ceiling_clearance_m >= 0,
-          "layers.*_clearance_m: must be >= 0");
+  cloud::validate(c.map.level);  // level.<key>, voxel.<key>, ghosts.<key>, layers.<key>
+  cloud::validate(c.map.voxel);
+  cloud::validate(c.map.ghosts);
+  cloud::validate(c.map.layers);
   const auto& lo = c.map.layout;
   require(lo.furniture_closing_iterations >= 0 && lo.furniture_closing_iterations <= 20,
           "layout.furniture_closing_iterations: must be in [0, 20]");
@@ -318,7 +283,7 @@ std::string to_yaml(const PipelineConfig& config) {
     out << YAML::Key << k << YAML::Value;
     if constexpr (std::is_same_v<T, objects::Connectivity>) {
       out << static_cast<int>(v);
-    } else if constexpr (std::is_same_v<T, cloud::UpAxis>) {
+    } else if constexpr (std::is_same_v<T, cloud_io::UpAxis>) {
       out << axis_name(v);
     } else if constexpr (std::is_same_v<T, std::optional<double>>) {
       if (v)
@@ -346,7 +311,7 @@ nlohmann::json to_json(const PipelineConfig& config) {
     auto& slot = j[s][k];
     if constexpr (std::is_same_v<T, objects::Connectivity>) {
       slot = static_cast<int>(v);
-    } else if constexpr (std::is_same_v<T, cloud::UpAxis>) {
+    } else if constexpr (std::is_same_v<T, cloud_io::UpAxis>) {
       slot = axis_name(v);
     } else if constexpr (std::is_same_v<T, std::optional<double>>) {
       slot = v ? nlohmann::json(*v) : nlohmann::json(nullptr);

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "indoormap/border/border.hpp"
-#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud_io/load.hpp"
 #include "indoormap/layout/pipeline.hpp"
 #include "indoormap/objects/objects.hpp"
 #include "plan_config.hpp"
@@ -17,7 +17,7 @@
 namespace indoormap::app {
 
 struct PipelineConfig {
-  cloud::LoadOptions load;
+  cloud_io::LoadOptions load;
   /// Scanner positions (input frame after unit / axis conversion, metres). When set they replace
   /// the positions found in the files.
   std::vector<Eigen::Vector3d> scanners;

@@ -4,7 +4,7 @@
 #include <iomanip>
 #include <sstream>
 
-#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud_io/write.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/io/map_io.hpp"
 #include "indoormap/io/render.hpp"
@@ -65,7 +65,7 @@ std::vector<std::string> write_object_outputs(const fs::path& out, const layout:
       pts.reserve(crops[k].size());
       for (auto i : crops[k]) pts.push_back((*what.input_points)[i]);
       const std::string name = "objects/object_" + std::to_string(res.objects[k].id) + ".pcd";
-      cloud::write_pcd_binary(out / name, pts);
+      cloud_io::write_pcd_binary(out / name, pts);
       j["crop_file"] = name;
       j["crop_points"] = pts.size();
       written.push_back(name);

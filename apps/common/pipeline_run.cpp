@@ -90,7 +90,7 @@ PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_
   PipelineRun run;
   const auto t0 = std::chrono::steady_clock::now();
   cfg.load.progress = terminal_progress();
-  cloud::LoadResult loaded = cloud::load_clouds(cli.inputs, cfg.load);
+  cloud_io::LoadResult loaded = cloud_io::load_clouds(cli.inputs, cfg.load);
   run.load_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   run.inputs = loaded.inputs;

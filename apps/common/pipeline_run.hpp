@@ -11,14 +11,14 @@
 
 #include "cli.hpp"
 #include "indoormap/border/border.hpp"
-#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud_io/load.hpp"
 #include "indoormap/layout/pipeline.hpp"
 #include "indoormap/objects/objects.hpp"
 
 namespace indoormap::app {
 
 struct PipelineRun {
-  std::vector<cloud::InputReport> inputs;
+  std::vector<cloud_io::InputReport> inputs;
   std::vector<Eigen::Vector3f> input_points;  ///< input frame; kept only when asked for
   layout::MapResult map;
   std::size_t kept = 0;

@@ -98,9 +98,7 @@ Grid<std::uint8_t> open_below_mask(const layout::MapResult& m,
   if (vx.nx != lay.width || vx.ny != lay.height || vx.nz <= 0 || vx.counts.empty() ||
       scanners_map.empty())
     return mask;
-  auto layer_of = [&](double z) {
-    return static_cast<std::int64_t>(std::floor((z - vx.origin_m.z()) / vx.cell_m));
-  };
+  auto layer_of = [&](double z) { return vx.layer_of(z); };
   // Empty below: no point from the furniture band's bottom to the door height.
   const std::int64_t lo = std::max<std::int64_t>(0, m.layers.furniture_band.lo_layer);
   const std::int64_t hi =

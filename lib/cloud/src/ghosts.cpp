@@ -3,25 +3,41 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+
+#include "indoormap/core/errors.hpp"
 
 namespace indoormap::cloud {
 
+void validate(const GhostParams& gh) {
+  auto require = [](bool ok, const char* what) {
+    if (!ok) throw UsageError(std::string("invalid parameter ") + what);
+  };
+  require(gh.max_points >= 1 && gh.max_points <= 65535, "ghosts.max_points: must be in [1, 65535]");
+  require(gh.min_pass_ratio > 0, "ghosts.min_pass_ratio: must be > 0");
+  require(gh.min_passes >= 1, "ghosts.min_passes: must be >= 1");
+  require(gh.min_layer_offset >= 0, "ghosts.min_layer_offset: must be >= 0");
+  require(gh.end_skip_m >= 0, "ghosts.end_skip_m: must be >= 0");
+  require(gh.max_rays >= 1 && gh.max_rays <= 1'000'000'000, "ghosts.max_rays: must be in [1, 1e9]");
+}
+
 GhostResult remove_ghost_voxels(VoxelGrid& g, const std::vector<Eigen::Vector3f>& points,
                                 const Eigen::Vector3d& scanner, const GhostParams& params) {
+  validate(params);
   GhostResult res;
   if (!params.enabled || !scanner.allFinite()) return res;
   res.applied = true;
   if (g.counts.empty() || points.empty()) return res;
   const std::int64_t n[3] = {g.nx, g.ny, g.nz};
-  const std::int64_t nxy = g.nx * g.ny;
+  const std::int64_t nxy = g.layer_size();
   std::vector<std::uint8_t> passes(g.counts.size(), 0);  // saturating
   const std::size_t stride = std::max<std::size_t>(
       1, (points.size() + params.max_rays - 1) / std::max<std::size_t>(params.max_rays, 1));
-  const Eigen::Vector3d s = (scanner - g.origin_m) / g.cell_m;  // voxel units
-  const double skip = params.end_skip_m / g.cell_m;
+  const Eigen::Vector3d s = g.to_voxel_coords(scanner);  // voxel units
+  const double skip = g.to_cells(params.end_skip_m);
   const std::uint16_t* counts = g.counts.data();
   for (std::size_t i = 0; i < points.size(); i += stride) {
-    const Eigen::Vector3d e = (points[i].cast<double>() - g.origin_m) / g.cell_m;
+    const Eigen::Vector3d e = g.to_voxel_coords(points[i].cast<double>());
     if (!e.allFinite()) continue;
     const double end_layer = std::floor(e.z());
     if (e.x() < 0 || e.y() < 0 || e.z() < 0 || e.x() >= n[0] || e.y() >= n[1] || e.z() >= n[2])
@@ -66,7 +82,7 @@ GhostResult remove_ghost_voxels(VoxelGrid& g, const std::vector<Eigen::Vector3f>
     const std::int64_t offset[3] = {step[0], step[1] * g.nx, step[2] * nxy};
     const std::int64_t lo_layer = static_cast<std::int64_t>(end_layer) - params.min_layer_offset,
                        hi_layer = static_cast<std::int64_t>(end_layer) + params.min_layer_offset;
-    std::int64_t idx = v[2] * nxy + v[1] * g.nx + v[0];
+    std::int64_t idx = g.index(v[0], v[1], v[2]);
     double t = t0;
     while (t < t1) {
       if (counts[idx] && (v[2] <= lo_layer || v[2] >= hi_layer) && passes[idx] != 0xFF)

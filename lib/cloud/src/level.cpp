@@ -5,14 +5,21 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
+
+#include "indoormap/core/errors.hpp"
 
 namespace indoormap::cloud {
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-double deg2rad(double d) { return d * kPi / 180.0; }
-double rad2deg(double r) { return r * 180.0 / kPi; }
+double deg2rad(double d) {
+  return d * kPi / 180.0;
+}
+double rad2deg(double r) {
+  return r * 180.0 / kPi;
+}
 
 std::vector<Eigen::Vector3d> stride_sample(const std::vector<Eigen::Vector3f>& points,
                                            std::size_t max_count) {
@@ -53,7 +60,8 @@ double fill_ratio(const std::vector<Eigen::Vector3d>& cand, const PlaneFit& f, d
   std::vector<std::uint8_t> occ(w * h, 0);
   for (std::size_t i = 0; i < xs.size(); ++i) {
     if (xs[i] < x0 || xs[i] > x1 || ys[i] < y0 || ys[i] > y1) continue;
-    occ[static_cast<std::size_t>((ys[i] - y0) / kCell) * w + static_cast<std::size_t>((xs[i] - x0) / kCell)] = 1;
+    occ[static_cast<std::size_t>((ys[i] - y0) / kCell) * w +
+        static_cast<std::size_t>((xs[i] - x0) / kCell)] = 1;
   }
   std::size_t n = 0;
   for (auto v : occ) n += v;
@@ -146,7 +154,22 @@ PlaneFit fit_plane_least_squares(const std::vector<Eigen::Vector3d>& points) {
   return f;
 }
 
+void validate(const LevelParams& lv) {
+  auto require = [](bool ok, const char* what) {
+    if (!ok) throw UsageError(std::string("invalid parameter ") + what);
+  };
+  require(lv.max_tilt_deg > 0 && lv.max_tilt_deg < 90, "level.max_tilt_deg: must be in (0, 90)");
+  require(lv.band_m > 0, "level.band_m: must be > 0");
+  require(lv.peak_fraction > 0 && lv.peak_fraction <= 1, "level.peak_fraction: must be in (0, 1]");
+  require(lv.inlier_m > 0, "level.inlier_m: must be > 0");
+  require(lv.iterations > 0 && lv.iterations <= 100000, "level.iterations: must be in [1, 100000]");
+  require(lv.sample_points >= 3 && lv.sample_points <= 100'000'000,
+          "level.sample_points: must be in [3, 1e8]");
+  require(lv.min_fill >= 0 && lv.min_fill <= 1, "level.min_fill: must be in [0, 1]");
+}
+
 LevelResult estimate_level(const std::vector<Eigen::Vector3f>& points, const LevelParams& params) {
+  validate(params);
   LevelResult r;
   if (!params.enabled) {
     r.note = "levelling disabled";
@@ -179,17 +202,21 @@ LevelResult estimate_level(const std::vector<Eigen::Vector3f>& points, const Lev
 
   std::vector<Eigen::Vector3d> low, high;
   for (const auto& q : sample) {
-    if (q.z() >= z_floor - 0.5 * params.band_m && q.z() <= z_floor + params.band_m) low.push_back(q);
-    if (q.z() <= z_ceiling + 0.5 * params.band_m && q.z() >= z_ceiling - params.band_m) high.push_back(q);
+    if (q.z() >= z_floor - 0.5 * params.band_m && q.z() <= z_floor + params.band_m)
+      low.push_back(q);
+    if (q.z() <= z_ceiling + 0.5 * params.band_m && q.z() >= z_ceiling - params.band_m)
+      high.push_back(q);
   }
   std::mt19937_64 rng(params.seed);
   r.floor = fit_horizontal_plane(low, params, rng);
   // A ceiling must lie well above the floor; with a flat cloud both bands are the same points.
-  if (z_ceiling - z_floor > 2.0 * params.band_m) r.ceiling = fit_horizontal_plane(high, params, rng);
+  if (z_ceiling - z_floor > 2.0 * params.band_m)
+    r.ceiling = fit_horizontal_plane(high, params, rng);
 
   Eigen::Vector3d up;
   if (r.floor.found && r.ceiling.found) {
-    const double angle = rad2deg(std::acos(std::clamp(r.floor.normal.dot(r.ceiling.normal), -1.0, 1.0)));
+    const double angle =
+        rad2deg(std::acos(std::clamp(r.floor.normal.dot(r.ceiling.normal), -1.0, 1.0)));
     if (angle <= params.max_normal_disagreement_deg) {
       up = (r.floor.normal * static_cast<double>(r.floor.inliers) +
             r.ceiling.normal * static_cast<double>(r.ceiling.inliers))
@@ -197,7 +224,8 @@ LevelResult estimate_level(const std::vector<Eigen::Vector3f>& points, const Lev
       r.note = "floor and ceiling planes";
     } else {
       up = r.floor.normal;
-      r.note = "floor plane only (ceiling not parallel to floor: " + std::to_string(angle) + " deg)";
+      r.note =
+          "floor plane only (ceiling not parallel to floor: " + std::to_string(angle) + " deg)";
     }
   } else if (r.floor.found) {
     up = r.floor.normal;
@@ -211,7 +239,8 @@ LevelResult estimate_level(const std::vector<Eigen::Vector3f>& points, const Lev
   }
   r.levelled = true;
   r.up_input = up;
-  r.map_from_input = Eigen::Quaterniond::FromTwoVectors(up, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  r.map_from_input =
+      Eigen::Quaterniond::FromTwoVectors(up, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   r.tilt_deg = rad2deg(std::acos(std::clamp(up.z(), -1.0, 1.0)));
   return r;
 }

@@ -45,9 +45,40 @@ std::pair<double, double> gap_limited_range(std::vector<float>& v, double gap) {
           median + static_cast<double>(hi - half + 1) * bin};
 }
 
+void require(bool ok, const char* what) {
+  if (!ok) throw UsageError(std::string("invalid parameter ") + what);
+}
+
 }  // namespace
 
+void validate(const VoxelParams& vx) {
+  require(vx.cell_m >= 0.001 && vx.cell_m <= 10, "voxel.cell_m: must be in [0.001, 10] m");
+  require(vx.max_cells > 0, "voxel.max_cells: must be > 0");
+  require(vx.bounds_gap_m > 0, "voxel.bounds_gap_m: must be > 0");
+  require(vx.bounds_sample > 0 && vx.bounds_sample <= 100'000'000,
+          "voxel.bounds_sample: must be in [1, 1e8]");
+}
+
+void validate(const LayerParams& ly) {
+  require(ly.min_points_per_voxel >= 1 && ly.min_points_per_voxel <= 65535,
+          "layers.min_points_per_voxel: must be in [1, 65535]");
+  require(ly.isolated_min_points >= 1, "layers.isolated_min_points: must be >= 1");
+  require(ly.floor_min_fraction > 0 && ly.floor_min_fraction <= 1,
+          "layers.floor_min_fraction: must be in (0, 1]");
+  require(ly.ceiling_min_fraction > 0 && ly.ceiling_min_fraction <= 1,
+          "layers.ceiling_min_fraction: must be in (0, 1]");
+  require(ly.wall_band_m > 0, "layers.wall_band_m: must be > 0");
+  require(ly.wall_min_extent_m >= 0 && ly.wall_min_extent_m <= ly.wall_band_m,
+          "layers.wall_min_extent_m: must be in [0, layers.wall_band_m]");
+  require(ly.furniture_max_height_m > 0, "layers.furniture_max_height_m: must be > 0");
+  require(ly.ceiling_onset_factor > 1, "layers.ceiling_onset_factor: must be > 1");
+  require(ly.min_room_height_m >= 0, "layers.min_room_height_m: must be >= 0");
+  require(ly.floor_clearance_m >= 0 && ly.ceiling_clearance_m >= 0,
+          "layers.*_clearance_m: must be >= 0");
+}
+
 Bounds3 robust_bounds(const std::vector<Eigen::Vector3f>& points, const VoxelParams& params) {
+  validate(params);
   const std::size_t max_sample = std::max<std::size_t>(1, params.bounds_sample);
   const double step = std::max(1.0, static_cast<double>(points.size()) / max_sample);
   std::vector<float> axis[3];
@@ -98,8 +129,7 @@ Bounds3 robust_bounds(const std::vector<Eigen::Vector3f>& points, const VoxelPar
 
 VoxelGrid voxelize(const std::vector<Eigen::Vector3f>& points, const Bounds3& bounds,
                    const VoxelParams& params) {
-  if (!(params.cell_m > 0.0) || !std::isfinite(params.cell_m))
-    throw UsageError("voxel.cell_m must be a positive number of metres");
+  validate(params);
   if (!bounds.lo_m.allFinite() || !bounds.hi_m.allFinite() ||
       (bounds.hi_m.array() < bounds.lo_m.array()).any())
     throw InputError("", "no points inside the grid bounds");
@@ -131,19 +161,12 @@ VoxelGrid voxelize(const std::vector<Eigen::Vector3f>& points, const Bounds3& bo
   g.counts.assign(static_cast<std::size_t>(total), 0);
 
   // Hot loop: one multiply-add per axis, a range check that also rejects NaN, one increment.
-  const float inv = static_cast<float>(1.0 / params.cell_m);
-  const float ox = static_cast<float>(g.origin_m.x()), oy = static_cast<float>(g.origin_m.y()),
-              oz = static_cast<float>(g.origin_m.z());
-  const float fnx = static_cast<float>(g.nx), fny = static_cast<float>(g.ny),
-              fnz = static_cast<float>(g.nz);
-  const std::int64_t nx = g.nx, nxy = g.nx * g.ny;
+  const VoxelBinner binner(g);
   std::uint16_t* counts = g.counts.data();
   std::uint64_t inside = 0;
   for (const auto& p : points) {
-    const float fx = (p.x() - ox) * inv, fy = (p.y() - oy) * inv, fz = (p.z() - oz) * inv;
-    if (!(fx >= 0.f && fx < fnx && fy >= 0.f && fy < fny && fz >= 0.f && fz < fnz)) continue;
-    const std::int64_t idx = static_cast<std::int64_t>(fz) * nxy +
-                             static_cast<std::int64_t>(fy) * nx + static_cast<std::int64_t>(fx);
+    const std::int64_t idx = binner.index_of(p);
+    if (idx < 0) continue;
     const std::uint16_t c = counts[idx];
     counts[idx] = static_cast<std::uint16_t>(c + (c != 0xFFFF));
     ++inside;
@@ -155,17 +178,13 @@ VoxelGrid voxelize(const std::vector<Eigen::Vector3f>& points, const Bounds3& bo
 
 namespace {
 
-std::int64_t layer_of(const VoxelGrid& g, double z) {
-  return static_cast<std::int64_t>(std::floor((z - g.origin_m.z()) / g.cell_m));
-}
-
 HeightBand make_band(const VoxelGrid& g, double lo, double hi) {
   HeightBand b;
   b.lo_m = lo;
   b.hi_m = hi;
-  b.lo_layer = std::max<std::int64_t>(0, layer_of(g, lo + 1e-9));
+  b.lo_layer = std::max<std::int64_t>(0, g.layer_of(lo + 1e-9));
   b.hi_layer = std::min<std::int64_t>(
-      g.nz - 1, static_cast<std::int64_t>(std::ceil((hi - g.origin_m.z()) / g.cell_m - 1e-9)) - 1);
+      g.nz - 1, static_cast<std::int64_t>(std::ceil(g.to_layer_coord(hi) - 1e-9)) - 1);
   return b;
 }
 
@@ -180,8 +199,9 @@ std::string fmt_m(double v) {
 // layers between 0.5 m above the floor and min_layer: where a sloped ceiling begins.
 std::optional<std::int64_t> ceiling_onset(const std::vector<std::int64_t>& h,
                                           std::int64_t floor_layer, std::int64_t min_layer,
-                                          std::int64_t last, double cell_m, double factor) {
-  const std::int64_t lo = floor_layer + static_cast<std::int64_t>(std::ceil(0.5 / cell_m));
+                                          std::int64_t last, const VoxelGeometry& g,
+                                          double factor) {
+  const std::int64_t lo = floor_layer + static_cast<std::int64_t>(std::ceil(g.to_cells(0.5)));
   if (min_layer - lo < 3 || min_layer > last) return std::nullopt;
   std::vector<std::int64_t> walls(h.begin() + lo, h.begin() + min_layer);
   std::nth_element(walls.begin(), walls.begin() + static_cast<std::ptrdiff_t>(walls.size() / 2),
@@ -196,9 +216,10 @@ std::optional<std::int64_t> ceiling_onset(const std::vector<std::int64_t>& h,
 }  // namespace
 
 LayerAnalysis analyse_layers(const VoxelGrid& g, const LayerParams& p) {
+  validate(p);
   LayerAnalysis a;
   a.occupied_per_layer.assign(static_cast<std::size_t>(g.nz), 0);
-  const std::int64_t nxy = g.nx * g.ny;
+  const std::int64_t nxy = g.layer_size();
   const auto min_pts = static_cast<std::uint16_t>(std::clamp(p.min_points_per_voxel, 1, 65535));
   for (std::int64_t z = 0; z < g.nz; ++z) {
     const std::uint16_t* layer = g.counts.data() + z * nxy;
@@ -223,7 +244,7 @@ LayerAnalysis analyse_layers(const VoxelGrid& g, const LayerParams& p) {
   // Floor: the first strong layer from below, then up to its local peak.
   if (p.floor_z_m) {
     a.floor_z_m = *p.floor_z_m;
-    a.floor_layer = std::clamp<std::int64_t>(layer_of(g, a.floor_z_m), 0, g.nz - 1);
+    a.floor_layer = std::clamp<std::int64_t>(g.layer_of(a.floor_z_m), 0, g.nz - 1);
   } else {
     std::int64_t z = first;
     while (z < last && static_cast<double>(h[z]) < p.floor_min_fraction * max_count) ++z;
@@ -235,11 +256,11 @@ LayerAnalysis analyse_layers(const VoxelGrid& g, const LayerParams& p) {
   // Ceiling: the first strong layer from above, then down to its local peak; it must lie at
   // least min_room_height above the floor.
   const std::int64_t min_ceiling_layer =
-      a.floor_layer + static_cast<std::int64_t>(std::ceil(p.min_room_height_m / g.cell_m));
+      a.floor_layer + static_cast<std::int64_t>(std::ceil(g.to_cells(p.min_room_height_m)));
   if (p.ceiling_z_m) {
     a.ceiling_found = true;
     a.ceiling_z_m = *p.ceiling_z_m;
-    a.ceiling_layer = std::clamp<std::int64_t>(layer_of(g, a.ceiling_z_m), 0, g.nz - 1);
+    a.ceiling_layer = std::clamp<std::int64_t>(g.layer_of(a.ceiling_z_m), 0, g.nz - 1);
   } else {
     std::int64_t z = last;
     while (z > min_ceiling_layer && static_cast<double>(h[z]) < p.ceiling_min_fraction * max_count)
@@ -250,7 +271,7 @@ LayerAnalysis analyse_layers(const VoxelGrid& g, const LayerParams& p) {
       a.ceiling_found = true;
       a.ceiling_layer = z;
       a.ceiling_z_m = g.layer_center_m(z);
-    } else if (auto onset = ceiling_onset(h, a.floor_layer, min_ceiling_layer, last, g.cell_m,
+    } else if (auto onset = ceiling_onset(h, a.floor_layer, min_ceiling_layer, last, g,
                                           p.ceiling_onset_factor)) {
       a.ceiling_found = true;
       a.ceiling_sloped = true;
@@ -293,7 +314,7 @@ Grid<std::uint8_t> project_band(const VoxelGrid& g, const HeightBand& band, int 
   const int w = static_cast<int>(g.nx), h = static_cast<int>(g.ny);
   Grid<std::uint32_t> sum(w, h, 0);
   const auto min_pts = static_cast<std::uint16_t>(std::clamp(min_points, 1, 65535));
-  const std::int64_t nxy = g.nx * g.ny;
+  const std::int64_t nxy = g.layer_size();
   const std::int64_t z_lo = std::max<std::int64_t>(band.lo_layer, 0),
                      z_hi = std::min(band.hi_layer, g.nz - 1);
   // Lowest occupied layer per column (relative to z_lo), for the vertical extent.

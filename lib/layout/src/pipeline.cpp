@@ -23,6 +23,10 @@ class Stopwatch {
 }  // namespace
 
 MapResult make_map(PointCloud cloud, const MapParams& params) {
+  cloud::validate(params.level);
+  cloud::validate(params.voxel);
+  cloud::validate(params.ghosts);
+  cloud::validate(params.layers);
   MapResult r;
   Stopwatch sw;
   r.level = cloud::estimate_level(cloud.points, params.level);
@@ -52,7 +56,7 @@ MapResult make_map(PointCloud cloud, const MapParams& params) {
   const auto& lp = params.layers;
   r.walls = cloud::project_band(
       r.voxels, r.layers.wall_band, lp.min_points_per_voxel, lp.isolated_min_points,
-      std::max(1, static_cast<int>(std::lround(lp.wall_min_extent_m / r.voxels.cell_m))));
+      std::max(1, static_cast<int>(std::lround(r.voxels.to_cells(lp.wall_min_extent_m)))));
   r.furniture = cloud::project_band(r.voxels, r.layers.furniture_band, lp.min_points_per_voxel,
                                     lp.isolated_min_points);
   // The slice just below the wall band tells hanging objects (lamps) from walls and pillars.
@@ -62,7 +66,7 @@ MapResult make_map(PointCloud cloud, const MapParams& params) {
   below.lo_layer = std::max<std::int64_t>(
       r.layers.furniture_band.lo_layer,
       below.hi_layer -
-          static_cast<std::int64_t>(std::ceil(params.layout.hanging_gap_m / r.voxels.cell_m)) + 1);
+          static_cast<std::int64_t>(std::ceil(r.voxels.to_cells(params.layout.hanging_gap_m))) + 1);
   auto support =
       cloud::project_band(r.voxels, below, lp.min_points_per_voxel, lp.isolated_min_points);
   // So does a column standing through most of the wall band: the wall above a window, where

@@ -79,11 +79,9 @@ bool line_of_sight(const cloud::VoxelGrid& g, const Eigen::Vector3d& scanner,
   for (std::int64_t i = 0; i <= n; ++i) {
     const double t = std::min(1.0, i * step / horiz);
     const Eigen::Vector3d p = scanner + t * d;
-    const auto x = static_cast<std::int64_t>(std::floor((p.x() - g.origin_m.x()) / g.cell_m));
-    const auto y = static_cast<std::int64_t>(std::floor((p.y() - g.origin_m.y()) / g.cell_m));
-    const auto z = static_cast<std::int64_t>(std::floor((p.z() - g.origin_m.z()) / g.cell_m));
-    if (x < 0 || y < 0 || z < 0 || x >= g.nx || y >= g.ny || z >= g.nz) continue;
-    if (g.count(static_cast<int>(x), static_cast<int>(y), z)) return false;
+    const VoxelIndex v = g.voxel_of(p);
+    if (!g.contains(v)) continue;
+    if (g.count(v.ix, v.iy, v.iz)) return false;
   }
   return true;
 }
@@ -402,7 +400,7 @@ void add_lamps(const Grid<Cell>& layout, const GridGeometry& geo, const cloud::V
   // higher up are not found.
   const std::int64_t z_hi = std::min<std::int64_t>(layers.ceiling_layer - 2, voxels.nz - 1);
   if (z_hi < z_lo) return;
-  const auto gap = static_cast<std::int64_t>(std::ceil(kLampMinClearance_m / voxels.cell_m));
+  const auto gap = static_cast<std::int64_t>(std::ceil(voxels.to_cells(kLampMinClearance_m)));
   // Walls, without the specks a lamp's cords make: a cord runs up through the wall band and is a
   // wall cell or two in the layout, inside the lamp.
   cv::Mat wall(h, w, CV_8U, cv::Scalar(0));
@@ -541,7 +539,7 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
   // Column extents; cells without data (pockets, closed gaps) take the top of the nearest cell
   // with data so that they join the object they fill.
   const auto max_gap =
-      static_cast<std::int64_t>(std::ceil(params.max_vertical_gap_m / voxels.cell_m));
+      static_cast<std::int64_t>(std::ceil(voxels.to_cells(params.max_vertical_gap_m)));
   Grid<Column> cols(w, h);
   Grid<std::uint8_t> pocket(w, h, 0);  // furniture cells without data, floor unseen
   cv::Mat no_data(h, w, CV_8U, cv::Scalar(1));
@@ -694,10 +692,8 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
     o.footprint_m = outline(res.labels, o.id, o.min_cell, o.max_cell, geo);
     o.box = min_area_box(o.footprint_m);
     if (!o.has_height) continue;
-    const auto z0 =
-        static_cast<std::int64_t>(std::floor((o.z_min_m - voxels.origin_m.z()) / voxels.cell_m));
-    const auto z1 =
-        static_cast<std::int64_t>(std::floor((o.z_max_m - voxels.origin_m.z()) / voxels.cell_m));
+    const std::int64_t z0 = voxels.layer_of(o.z_min_m);
+    const std::int64_t z1 = voxels.layer_of(o.z_max_m);
     for (int r = o.min_cell.row; r <= o.max_cell.row; ++r)
       for (int c = o.min_cell.col; c <= o.max_cell.col; ++c)
         if (res.labels.at(c, r) == o.id)

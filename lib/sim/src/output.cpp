@@ -11,7 +11,7 @@
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
-#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud_io/write.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/version.hpp"
@@ -29,12 +29,6 @@ ordered_json poly_json(const Polygon& poly) {
   ordered_json a = ordered_json::array();
   for (const auto& p : poly) a.push_back(xy(p));
   return a;
-}
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
 }
 
 /// Shortest text that reads back as the same double.
@@ -136,30 +130,11 @@ void write_map_yaml(const fs::path& path, const std::string& image, const GridGe
 }
 
 std::vector<std::string> write_3dtk(const fs::path& dir, const SimResult& sim) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw OutputError(dir.string(), ec.message());
-  std::vector<std::string> files;
-  for (std::size_t k = 0; k < sim.scans.size(); ++k) {
-    const ScanBlock& b = sim.scans[k];
-    const Eigen::Vector3d s = sim.scanner_positions_m[b.scanner];
-    char name[32];
-    std::snprintf(name, sizeof name, "scan%03zu", k);
-    write_stream_atomic(dir / (std::string(name) + ".3d"), [&](std::ostream& out) {
-      char line[96];
-      for (std::size_t i = b.begin; i < b.end; ++i) {
-        const Eigen::Vector3d p = sim.points[i].cast<double>() - s;
-        const int len = std::snprintf(line, sizeof line, "%.3f %.3f %.3f\n", -100.0 * p.y(), 100.0 * p.z(), 100.0 * p.x());
-        out.write(line, len);
-      }
-    });
-    const std::string pose = fmt("%.3f", -100.0 * s.y()) + " " + fmt("%.3f", 100.0 * s.z()) + " " +
-                             fmt("%.3f", 100.0 * s.x()) + "\n0 0 0\n";
-    write_file_atomic(dir / (std::string(name) + ".pose"), pose);
-    files.push_back(std::string(name) + ".3d");
-    files.push_back(std::string(name) + ".pose");
-  }
-  return files;
+  std::vector<cloud_io::TdtkScan> scans;
+  for (const ScanBlock& b : sim.scans)
+    scans.push_back({std::span(sim.points).subspan(b.begin, b.end - b.begin),
+                     sim.scanner_positions_m[b.scanner]});
+  return cloud_io::write_3dtk_scans(dir, scans);
 }
 
 WrittenOutputs write_scene_outputs(const fs::path& dir, const Scene& input, const SimResult& sim,
@@ -172,7 +147,7 @@ WrittenOutputs write_scene_outputs(const fs::path& dir, const Scene& input, cons
   const auto items = furniture_truth(scene);
 
   const Eigen::Vector3d viewpoint = sim.scanner_positions_m.empty() ? Eigen::Vector3d::Zero() : sim.scanner_positions_m.front();
-  cloud::write_pcd_binary((dir / "cloud.pcd").string(), sim.points, viewpoint);
+  cloud_io::write_pcd_binary((dir / "cloud.pcd").string(), sim.points, viewpoint);
   out.files.push_back("cloud.pcd");
 
   write_layout_pgm(dir / "ground_truth_layout.pgm", out.layout.cells);

@@ -5,20 +5,20 @@
 #include <string>
 
 #include "fuzz_target.hpp"
-#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud_io/load.hpp"
 #include "indoormap/core/errors.hpp"
 
 namespace indoormap::fuzz {
 
-inline cloud::LoadOptions cloud_options() {
-  cloud::LoadOptions o;
+inline cloud_io::LoadOptions cloud_options() {
+  cloud_io::LoadOptions o;
   o.max_points = kMaxPoints;
   return o;
 }
 
 /// Loads path and checks: at least one point, all finite, counts consistent, within budget.
 inline void load_and_check(const std::string& path) {
-  const cloud::LoadResult r = cloud::load_cloud(path, cloud_options());
+  const cloud_io::LoadResult r = cloud_io::load_cloud(path, cloud_options());
   if (r.cloud.points.empty() || r.inputs.size() != 1)
     throw std::logic_error("load succeeded without points");
   for (const auto& p : r.cloud.points)

@@ -27,6 +27,9 @@ struct GhostParams {
   std::size_t max_rays = 500'000;  ///< at most this many rays are traced (every k-th point)
 };
 
+/// Throws UsageError naming the key (ghosts.min_passes, ...) for a parameter out of its range.
+void validate(const GhostParams& params);
+
 struct GhostResult {
   bool applied = false;  ///< the filter ran (enabled, one scanner known)
   std::int64_t voxels_removed = 0;
@@ -36,7 +39,7 @@ struct GhostResult {
 
 /// Clears the ghost voxels of `grid` (their counts become 0). `points` and `scanner` are in the
 /// grid's frame; every point is taken as a return of that one scanner. Points outside the grid
-/// are ignored. Does nothing when !params.enabled.
+/// are ignored. Does nothing when !params.enabled. Throws UsageError for invalid params.
 GhostResult remove_ghost_voxels(VoxelGrid& grid, const std::vector<Eigen::Vector3f>& points,
                                 const Eigen::Vector3d& scanner, const GhostParams& params = {});
 

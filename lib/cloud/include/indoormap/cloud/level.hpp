@@ -13,14 +13,14 @@ namespace indoormap::cloud {
 
 struct LevelParams {
   bool enabled = true;
-  double max_tilt_deg = 10.0;      ///< planes tilted more than this are not floor / ceiling
-  double band_m = 0.6;             ///< search band around the floor / ceiling histogram peak
-  double peak_fraction = 0.2;      ///< floor / ceiling: lowest / highest 0.1 m height bin with this
-                                   ///< share of the fullest bin
-  double inlier_m = 0.03;          ///< RANSAC inlier distance
-  int iterations = 1000;           ///< RANSAC iterations per plane
+  double max_tilt_deg = 10.0;  ///< planes tilted more than this are not floor / ceiling
+  double band_m = 0.6;         ///< search band around the floor / ceiling histogram peak
+  double peak_fraction = 0.2;  ///< floor / ceiling: lowest / highest 0.1 m height bin with this
+                               ///< share of the fullest bin
+  double inlier_m = 0.03;      ///< RANSAC inlier distance
+  int iterations = 1000;       ///< RANSAC iterations per plane
   std::size_t sample_points = 200000;  ///< points used for the fit (evenly strided)
-  std::size_t min_inliers = 200;   ///< fewer inliers: plane not found
+  std::size_t min_inliers = 200;       ///< fewer inliers: plane not found
   /// The inliers must cover this share of their bounding box (on a 0.25 m grid): a floor or a
   /// ceiling is an area, the top edges of the walls of a ceiling-less scan are only a ring.
   double min_fill = 0.1;
@@ -28,26 +28,30 @@ struct LevelParams {
   std::uint64_t seed = 1;
 };
 
+/// Throws UsageError naming the key (level.band_m, ...) for a parameter out of its range.
+void validate(const LevelParams& params);
+
 struct PlaneFit {
   bool found = false;
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< unit, pointing up (z > 0)
-  double offset_m = 0.0;     ///< plane: normal . p = offset_m
-  std::size_t inliers = 0;   ///< among the sampled points
-  double rms_m = 0.0;        ///< RMS distance of the inliers
+  double offset_m = 0.0;                              ///< plane: normal . p = offset_m
+  std::size_t inliers = 0;                            ///< among the sampled points
+  double rms_m = 0.0;                                 ///< RMS distance of the inliers
 };
 
 struct LevelResult {
-  bool levelled = false;          ///< false: rotation is identity (disabled or no plane found)
+  bool levelled = false;  ///< false: rotation is identity (disabled or no plane found)
   Eigen::Matrix3d map_from_input = Eigen::Matrix3d::Identity();  ///< rotation about the origin
-  double tilt_deg = 0.0;          ///< angle between the measured up direction and z
+  double tilt_deg = 0.0;  ///< angle between the measured up direction and z
   Eigen::Vector3d up_input = Eigen::Vector3d::UnitZ();  ///< measured up direction, input frame
-  PlaneFit floor;                 ///< in the input frame
-  PlaneFit ceiling;               ///< in the input frame
-  std::string note;               ///< why not levelled, or which planes were used
+  PlaneFit floor;                                       ///< in the input frame
+  PlaneFit ceiling;                                     ///< in the input frame
+  std::string note;  ///< why not levelled, or which planes were used
 };
 
 /// Estimates the levelling rotation. Deterministic for a fixed seed. Never throws on data it
-/// cannot level: the result says so (levelled = false) and why.
+/// cannot level: the result says so (levelled = false) and why. Throws UsageError for invalid
+/// params.
 LevelResult estimate_level(const std::vector<Eigen::Vector3f>& points, const LevelParams& params);
 
 /// Rotates points and scanner positions in place: p <- R p.

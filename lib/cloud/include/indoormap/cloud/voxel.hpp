@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "indoormap/core/grid.hpp"
+#include "indoormap/core/voxel_geometry.hpp"
 
 namespace indoormap::cloud {
 
@@ -17,31 +18,25 @@ struct Bounds3 {
 };
 
 struct VoxelParams {
-  double cell_m = 0.05;                    ///< voxel edge
-  std::int64_t max_cells = 400'000'000;    ///< refuse larger grids before allocating (2 B/cell)
-  double bounds_gap_m = 1.0;               ///< robust bounds stop at an empty gap this wide
-  std::size_t bounds_sample = 65536;       ///< points sampled for the gap search
+  double cell_m = 0.05;                  ///< voxel edge
+  std::int64_t max_cells = 400'000'000;  ///< refuse larger grids before allocating (2 B/cell)
+  double bounds_gap_m = 1.0;             ///< robust bounds stop at an empty gap this wide
+  std::size_t bounds_sample = 65536;     ///< points sampled for the gap search
 };
 
-/// Dense voxel grid, layers contiguous: index = (iz * ny + iy) * nx + ix. Counts saturate.
-struct VoxelGrid {
-  Eigen::Vector3d origin_m = Eigen::Vector3d::Zero();  ///< map-frame corner of voxel (0,0,0)
-  double cell_m = 0.05;
-  std::int64_t nx = 0, ny = 0, nz = 0;
-  std::vector<std::uint16_t> counts;
+/// Throws UsageError naming the key (voxel.cell_m, ...) for a parameter out of its range.
+void validate(const VoxelParams& params);
+
+/// Dense voxel grid with a count per voxel; its geometry (origin, cell, size, index) is the
+/// VoxelGeometry base. Counts saturate.
+struct VoxelGrid : VoxelGeometry {
+  std::vector<std::uint16_t> counts;  ///< at index(ix, iy, iz)
   std::uint64_t points_inside = 0;
   std::uint64_t points_outside = 0;  ///< beyond the robust bounds (or non-finite)
 
   std::uint16_t count(std::int64_t ix, std::int64_t iy, std::int64_t iz) const {
-    return counts[static_cast<std::size_t>((iz * ny + iy) * nx + ix)];
+    return counts[static_cast<std::size_t>(index(ix, iy, iz))];
   }
-  /// The 2D grid of one layer (x, y) in map metres.
-  GridGeometry geometry2d() const {
-    return GridGeometry({origin_m.x(), origin_m.y()}, cell_m, static_cast<int>(nx),
-                        static_cast<int>(ny));
-  }
-  double layer_bottom_m(std::int64_t iz) const { return origin_m.z() + iz * cell_m; }
-  double layer_center_m(std::int64_t iz) const { return origin_m.z() + (iz + 0.5) * cell_m; }
 };
 
 /// Bounds of the main body of the data: per axis, the run of a sample around the median with no
@@ -63,20 +58,23 @@ struct LayerParams {
   /// No strong ceiling layer (a sloped ceiling spreads over many layers): the ceiling starts at the
   /// first layer above min_room_height whose count exceeds this factor times the walls' baseline.
   double ceiling_onset_factor = 1.5;
-  double floor_clearance_m = 0.10;     ///< the furniture band starts this far above the floor
-  double ceiling_clearance_m = 0.15;   ///< the wall band ends this far below the ceiling
-  double wall_band_m = 0.50;           ///< thickness of the wall band
+  double floor_clearance_m = 0.10;    ///< the furniture band starts this far above the floor
+  double ceiling_clearance_m = 0.15;  ///< the wall band ends this far below the ceiling
+  double wall_band_m = 0.50;          ///< thickness of the wall band
   /// A wall cell's band column spans at least this height (lowest to highest occupied voxel): a
   /// wall stands through the band, while a lamp or the top of a tall cabinet reaching into it is a
   /// thin horizontal slab. 0: any point in the band makes a wall (the paper).
   double wall_min_extent_m = 0.2;
-  double furniture_max_height_m = 2.0; ///< the furniture band ends here (above the floor) at most
+  double furniture_max_height_m = 2.0;  ///< the furniture band ends here (above the floor) at most
   // Overrides (map-frame heights, metres); unset means "detect".
   std::optional<double> floor_z_m;
   std::optional<double> ceiling_z_m;
   std::optional<double> wall_band_lo_m, wall_band_hi_m;
   std::optional<double> furniture_band_lo_m, furniture_band_hi_m;
 };
+
+/// Throws UsageError naming the key (layers.wall_band_m, ...) for a parameter out of its range.
+void validate(const LayerParams& params);
 
 /// A height interval, both as metres and as the inclusive range of layers it covers.
 struct HeightBand {
@@ -88,8 +86,9 @@ struct LayerAnalysis {
   std::vector<std::int64_t> occupied_per_layer;  ///< bottom up
   std::int64_t floor_layer = 0;
   double floor_z_m = 0.0;
-  bool ceiling_found = false;   ///< false: ceiling_z_m is the documented fallback (top of data)
-  bool ceiling_sloped = false;  ///< found as an onset, not a single layer: ceiling_z_m is its lowest part
+  bool ceiling_found = false;  ///< false: ceiling_z_m is the documented fallback (top of data)
+  bool ceiling_sloped =
+      false;  ///< found as an onset, not a single layer: ceiling_z_m is its lowest part
   std::int64_t ceiling_layer = 0;
   double ceiling_z_m = 0.0;
   HeightBand wall_band;

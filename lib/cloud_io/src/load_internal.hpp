@@ -1,5 +1,5 @@
 #pragma once
-// Private to im_cloud: the per-format readers behind load_clouds. No PCL here.
+// Private to im_cloud_io: the per-format readers behind load_clouds. No PCL here.
 //
 // Every reader appends raw points to `out` (input units and axes, except 3DTK which converts to
 // the output frame itself), including non-finite ones; load.cpp converts, drops and counts.
@@ -11,9 +11,9 @@
 #include <string_view>
 #include <vector>
 
-#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud_io/load.hpp"
 
-namespace indoormap::cloud::detail {
+namespace indoormap::cloud_io::detail {
 
 /// The point budget of the current file: how many points load_clouds may still accept.
 struct Budget {
@@ -80,4 +80,4 @@ void for_each_line(const std::string& file, std::uint64_t offset, std::size_t fi
 /// used to reserve memory without trusting the file.
 std::uint64_t text_points_upper_bound(std::uint64_t bytes);
 
-}  // namespace indoormap::cloud::detail
+}  // namespace indoormap::cloud_io::detail

@@ -11,7 +11,7 @@
 #include "indoormap/core/errors.hpp"
 #include "load_internal.hpp"
 
-namespace indoormap::cloud::detail {
+namespace indoormap::cloud_io::detail {
 
 namespace {
 
@@ -192,4 +192,4 @@ ReadInfo read_xyz(const std::string& file, const Budget& budget, const LoadOptio
   return info;
 }
 
-}  // namespace indoormap::cloud::detail
+}  // namespace indoormap::cloud_io::detail

@@ -4,11 +4,11 @@
 #include <cstdio>
 #include <string>
 
-#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud_io/write.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 
-namespace indoormap::cloud {
+namespace indoormap::cloud_io {
 
 namespace {
 static_assert(sizeof(Eigen::Vector3f) == 3 * sizeof(float), "Vector3f must be three packed floats");
@@ -40,4 +40,4 @@ void write_pcd_binary(const std::string& path, const std::vector<Eigen::Vector3f
   });
 }
 
-}  // namespace indoormap::cloud
+}  // namespace indoormap::cloud_io

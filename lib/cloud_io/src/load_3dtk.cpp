@@ -9,11 +9,11 @@
 #include <numbers>
 #include <optional>
 
-#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud_io/load.hpp"
 #include "indoormap/core/errors.hpp"
 #include "load_internal.hpp"
 
-namespace indoormap::cloud {
+namespace indoormap::cloud_io {
 
 std::array<double, 16> tdtk_pose_to_matrix(const double translation_cm[3],
                                            const double euler_deg[3]) {
@@ -206,4 +206,4 @@ ReadInfo read_3dtk(const std::string& path, const Budget& budget, const LoadOpti
 
 }  // namespace detail
 
-}  // namespace indoormap::cloud
+}  // namespace indoormap::cloud_io

@@ -1,6 +1,7 @@
 #pragma once
 // Point-cloud loaders: PCD (ascii / binary / binary_compressed), PLY, plain text XYZ, and 3DTK
 // scan directories. PCL is used behind this header only; callers see indoormap::PointCloud.
+// The writers of the same formats are in indoormap/cloud_io/write.hpp.
 //
 // Output frame: metres, right-handed, z up. 3DTK data (cm, left-handed, y up) is converted
 // automatically (X = z/100, Y = -x/100, Z = y/100); other formats use LoadOptions::unit_m and
@@ -16,7 +17,7 @@
 
 #include "indoormap/core/cloud.hpp"
 
-namespace indoormap::cloud {
+namespace indoormap::cloud_io {
 
 /// Which input axis points up (for PCD / PLY / XYZ). kY means a right-handed y-up frame, mapped
 /// to z-up as X = x, Y = -z, Z = y.
@@ -35,6 +36,9 @@ struct LoadOptions {
   /// [0, 1] of that file read; may be empty.
   std::function<void(const std::string& file, double fraction)> progress;
 };
+
+/// Throws UsageError naming the key (input.unit_m, input.max_points) for an option out of range.
+void validate(const LoadOptions& options);
 
 struct InputReport {
   std::string path;
@@ -91,14 +95,9 @@ PcdHeader read_pcd_header(const std::string& bytes, const std::string& file,
 PcdHeader read_pcd_header(std::string_view head, std::uint64_t file_size, const std::string& file,
                           std::uint64_t max_points);
 
-/// Writes points (metres, given frame) as a binary PCD with fields x y z, atomically (temporary
-/// name, then rename). viewpoint_m is written to the VIEWPOINT line.
-void write_pcd_binary(const std::string& path, const std::vector<Eigen::Vector3f>& points,
-                      const Eigen::Vector3d& viewpoint_m = Eigen::Vector3d::Zero());
-
 /// The 3DTK pose convention (EulerToMatrix4): translation in cm and Euler angles in degrees to a
 /// column-major 4x4 matrix in 3DTK's own (left-handed, y-up, cm) frame.
 std::array<double, 16> tdtk_pose_to_matrix(const double translation_cm[3],
                                            const double euler_deg[3]);
 
-}  // namespace indoormap::cloud
+}  // namespace indoormap::cloud_io

@@ -14,11 +14,11 @@
 #include <limits>
 #include <map>
 
-#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud_io/load.hpp"
 #include "indoormap/core/errors.hpp"
 #include "load_internal.hpp"
 
-namespace indoormap::cloud {
+namespace indoormap::cloud_io {
 
 namespace {
 
@@ -389,4 +389,4 @@ ReadInfo read_pcd(const std::string& file, const Budget& budget, const LoadOptio
 
 }  // namespace detail
 
-}  // namespace indoormap::cloud
+}  // namespace indoormap::cloud_io

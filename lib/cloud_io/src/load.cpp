@@ -1,6 +1,6 @@
 // Dispatch by extension / directory, merging, unit and up-axis conversion, non-finite dropping,
 // and the point budget shared by every reader.
-#include "indoormap/cloud/load.hpp"
+#include "indoormap/cloud_io/load.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -13,7 +13,7 @@
 #include "indoormap/core/errors.hpp"
 #include "load_internal.hpp"
 
-namespace indoormap::cloud {
+namespace indoormap::cloud_io {
 
 namespace fs = std::filesystem;
 
@@ -91,12 +91,6 @@ Eigen::Vector3d to_output(const Eigen::Vector3d& p, const LoadOptions& options) 
   return m;
 }
 
-void validate(const LoadOptions& options) {
-  if (!(options.unit_m > 0.0) || !std::isfinite(options.unit_m))
-    throw UsageError("LoadOptions::unit_m must be a positive finite number, got " +
-                     std::to_string(options.unit_m));
-}
-
 // Loads one input, appending to result; budget.used counts the points already in result.
 void load_one(const std::string& path, const LoadOptions& options, LoadResult& result) {
   detail::Budget budget{options.max_points, 0};
@@ -161,6 +155,14 @@ void load_one(const std::string& path, const LoadOptions& options, LoadResult& r
 
 }  // namespace
 
+void validate(const LoadOptions& options) {
+  auto require = [](bool ok, const char* what) {
+    if (!ok) throw UsageError(std::string("invalid parameter ") + what);
+  };
+  require(options.unit_m > 0 && std::isfinite(options.unit_m), "input.unit_m: must be > 0");
+  require(options.max_points > 0, "input.max_points: must be > 0");
+}
+
 LoadResult load_clouds(const std::vector<std::string>& paths, const LoadOptions& options) {
   validate(options);
   if (paths.empty()) throw UsageError("no input cloud given");
@@ -173,4 +175,4 @@ LoadResult load_cloud(const std::string& path, const LoadOptions& options) {
   return load_clouds({path}, options);
 }
 
-}  // namespace indoormap::cloud
+}  // namespace indoormap::cloud_io

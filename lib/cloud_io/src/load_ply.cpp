@@ -14,7 +14,7 @@
 #include "indoormap/core/errors.hpp"
 #include "load_internal.hpp"
 
-namespace indoormap::cloud::detail {
+namespace indoormap::cloud_io::detail {
 
 namespace {
 
@@ -411,4 +411,4 @@ ReadInfo read_ply(const std::string& file, const Budget& budget,
   return info;
 }
 
-}  // namespace indoormap::cloud::detail
+}  // namespace indoormap::cloud_io::detail
