@@ -23,6 +23,7 @@ class Stopwatch {
 }  // namespace
 
 MapResult make_map(PointCloud cloud, const MapParams& params) {
+  validate(params.layout);  // before the heavy stages (the cloud stages check their own params)
   MapResult r;
   Stopwatch sw;
   r.level = cloud::estimate_level(cloud.points, params.level);

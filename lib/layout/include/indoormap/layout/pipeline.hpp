@@ -43,7 +43,8 @@ struct MapResult {
 };
 
 /// Runs the pipeline on a cloud in the input frame (metres, z up). Scanner positions in
-/// cloud.scanners are used as flood-fill seeds. Throws InputError / BudgetError on unusable data.
+/// cloud.scanners are used as flood-fill seeds. Throws InputError / BudgetError on unusable data
+/// and UsageError on invalid params (validate).
 MapResult make_map(PointCloud cloud, const MapParams& params);
 
 }  // namespace indoormap::layout
