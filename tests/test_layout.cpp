@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "indoormap/core/errors.hpp"
 #include "indoormap/layout/layout.hpp"
+#include "indoormap/layout/pipeline.hpp"
 
 using namespace indoormap;
 using namespace indoormap::layout;
@@ -315,4 +317,24 @@ TEST(Layout, SpeckledCabinetFaceStopsTheFlood) {
   paper.flood_barrier_closing = 0;
   r = build_layout(walls, furn, geo_for(walls), {{4.5, 1.5}}, paper);
   EXPECT_EQ(r.layout.at(2, 4), Cell::kFree);
+}
+
+// The parameter checks live beside LayoutParams and run in the library entry points, so a
+// library user gets the command line's messages.
+TEST(LayoutParams, ValidatedByBuildLayoutAndMakeMap) {
+  EXPECT_NO_THROW(validate(LayoutParams{}));
+  LayoutParams bad;
+  bad.passage_min_lines = 5;
+  try {
+    validate(bad);
+    FAIL() << "accepted";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("invalid parameter layout.passage_min_lines"),
+              std::string::npos);
+  }
+  const Grid<std::uint8_t> g(4, 4, 0);
+  EXPECT_THROW(build_layout(g, g, geo_for(g), {}, bad), UsageError);
+  MapParams mp;
+  mp.layout.hanging_gap_m = 0;
+  EXPECT_THROW(make_map(PointCloud{}, mp), UsageError);
 }

@@ -648,3 +648,24 @@ TEST(ObjectsAccuracy, TwentyHeldOutScenes) {
   EXPECT_GE(t.precision, 0.85);
   EXPECT_LE(t.median_height_error_m, 0.05);
 }
+
+TEST(ObjectKind, NamesRoundTripAndUnknownNamesAreNullopt) {
+  for (const ObjectKind k : kObjectKinds) EXPECT_EQ(parse_object_kind(to_string(k)), k);
+  EXPECT_EQ(to_string(ObjectKind::kFurniture), "furniture");
+  EXPECT_EQ(to_string(ObjectKind::kInstallation), "installation");
+  EXPECT_FALSE(parse_object_kind("sofa"));
+  EXPECT_FALSE(stands_on_floor(ObjectKind::kHanging));
+  EXPECT_FALSE(stands_on_floor(ObjectKind::kLamp));
+  EXPECT_TRUE(stands_on_floor(ObjectKind::kPillar));
+}
+
+TEST(ObjectParams, ValidatedByExtractObjects) {
+  EXPECT_NO_THROW(validate(ObjectParams{}));
+  ObjectParams bad;
+  bad.top_percentile = 101;
+  EXPECT_THROW(validate(bad), UsageError);
+  const Grid<Cell> layout(2, 2, Cell::kFree);
+  const GridGeometry geo({0.0, 0.0}, 0.1, 2, 2);
+  EXPECT_THROW(extract_objects(layout, geo, cloud::VoxelGrid{}, cloud::LayerAnalysis{}, bad),
+               UsageError);  // checked first, before the sizes
+}

@@ -3,12 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
-#include <fstream>
-#include <map>
 #include <optional>
-#include <set>
-#include <sstream>
-#include <type_traits>
 
 #include "config_reader.hpp"
 #include "indoormap/core/errors.hpp"

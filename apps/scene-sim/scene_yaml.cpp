@@ -1,8 +1,8 @@
 #include "scene_yaml.hpp"
 
 #include <optional>
-#include <set>
-#include <sstream>
+#include <string>
+#include <vector>
 
 #include "config_reader.hpp"
 #include "indoormap/core/errors.hpp"

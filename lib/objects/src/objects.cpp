@@ -527,11 +527,11 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
                               const cloud::VoxelGrid& voxels, const cloud::LayerAnalysis& layers,
                               const ObjectParams& params,
                               const std::vector<Eigen::Vector3d>& scanners_map) {
+  validate(params);
   const std::int64_t floor_layer = layers.floor_layer, ceiling_layer = layers.ceiling_layer;
   const int w = layout.width, h = layout.height;
   if (w != geo.width() || h != geo.height() || voxels.nx != w || voxels.ny != h)
     throw Error("extract_objects: layout, geometry and voxel grid differ in size");
-  validate(params);
   ObjectsResult res;
   res.labels = Grid<std::int32_t>(w, h, 0);
   if (w == 0 || h == 0) return res;
