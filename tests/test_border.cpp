@@ -873,20 +873,20 @@ TEST(BorderObjects, InteriorComponentsInsideTheRoomJoinTheObjectList) {
   objects::ObjectsResult objs;
   objects::FurnitureObject pillar;
   pillar.id = 1;
-  pillar.kind = "pillar";
+  pillar.kind = ObjectKind::kPillar;
   pillar.min_m = {0.9, 2.9};
   pillar.max_m = {1.3, 3.3};
   objs.objects.push_back(pillar);
   app::add_border_objects(objs, r);
   ASSERT_EQ(objs.objects.size(), 3u);
   EXPECT_EQ(objs.objects[1].id, 2);
-  EXPECT_EQ(objs.objects[1].kind, "column");
+  EXPECT_EQ(objs.objects[1].kind, ObjectKind::kColumn);
   EXPECT_NEAR(objs.objects[1].area_m2, 0.4 * 0.6, 1e-9);
   EXPECT_NEAR(objs.objects[1].box.length_m, 0.6, 1e-9);
   EXPECT_NEAR(objs.objects[1].box.angle_deg, 90.0, 1e-9);
   EXPECT_EQ(objs.objects[1].footprint_m.size(), 4u);
   EXPECT_FALSE(objs.objects[1].has_height);
-  EXPECT_EQ(objs.objects[2].kind, "installation");
+  EXPECT_EQ(objs.objects[2].kind, ObjectKind::kInstallation);
   // Its crop is its box at every height: on a hand-made cloud, exactly the points in the box.
   EXPECT_EQ(objs.objects[1].own_cells.size(), 4u * 6u);
   std::vector<Eigen::Vector3f> pts;

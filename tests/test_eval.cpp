@@ -4,6 +4,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "indoormap/core/errors.hpp"
 #include "indoormap/sim/eval.hpp"
 #include "indoormap/sim/output.hpp"
 #include "indoormap/sim/simulate.hpp"
@@ -110,6 +111,25 @@ TEST(EvalObjects, MatchingRecallPrecisionAndHeights) {
   // Half overlap (IoU 1/3) is not a match.
   const ObjectScores t = evaluate_objects({truth[0]}, {{"h", "", rectangle({0.5, 0}, {1, 1}, 0), {}, {}, true}}, 0.5);
   EXPECT_EQ(t.matched, 0);
+}
+
+// map-eval's entry point: params checked, and without include_hanging both sides keep only what
+// stands on the floor.
+TEST(EvalObjects, ParamsAreValidatedAndHangingItemsLeftOutUnlessAsked) {
+  std::vector<EvalObject> truth(2), result(2);
+  truth[0] = {"desk", "desk", rectangle({0, 0}, {1, 1}, 0), 0.0, 0.75, true};
+  truth[1] = {"lamp", "lamp", rectangle({5, 0}, {1, 1}, 0), 2.0, 2.3, false};
+  result[0] = {"1", "", rectangle({0, 0}, {1, 1}, 0), 0.0, 0.75, true};
+  result[1] = {"2", "", rectangle({5, 0}, {1, 1}, 0), 2.0, 2.3, false};
+  const ObjectScores floor_only = evaluate_objects(truth, result, EvalParams{});
+  EXPECT_EQ(floor_only.truth_count, 1);
+  EXPECT_EQ(floor_only.result_count, 1);
+  EXPECT_EQ(floor_only.matched, 1);
+  const ObjectScores all = evaluate_objects(truth, result, EvalParams{0.5, true});
+  EXPECT_EQ(all.truth_count, 2);
+  EXPECT_EQ(all.matched, 2);
+  EXPECT_THROW(evaluate_objects(truth, result, EvalParams{0.0, false}), UsageError);
+  EXPECT_THROW(validate(EvalParams{1.5, false}), UsageError);
 }
 
 TEST(EvalRooms, HausdorffAndAreaError) {

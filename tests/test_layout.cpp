@@ -331,3 +331,23 @@ TEST(MakeMap, ValidatesTheCloudParametersFirst) {
     EXPECT_EQ(std::string(e.what()), "invalid parameter ghosts.end_skip_m: must be >= 0");
   }
 }
+
+// The parameter checks live beside LayoutParams and run in the library entry points, so a
+// library user gets the command line's messages.
+TEST(LayoutParams, ValidatedByBuildLayoutAndMakeMap) {
+  EXPECT_NO_THROW(validate(LayoutParams{}));
+  LayoutParams bad;
+  bad.passage_min_lines = 5;
+  try {
+    validate(bad);
+    FAIL() << "accepted";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("invalid parameter layout.passage_min_lines"),
+              std::string::npos);
+  }
+  const Grid<std::uint8_t> g(4, 4, 0);
+  EXPECT_THROW(build_layout(g, g, geo_for(g), {}, bad), UsageError);
+  MapParams mp;
+  mp.layout.hanging_gap_m = 0;
+  EXPECT_THROW(make_map(PointCloud{}, mp), UsageError);
+}

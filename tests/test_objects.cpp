@@ -172,13 +172,13 @@ TEST(Objects, ObjectsHighAboveTheFloorAreHanging) {
   p.min_area_m2 = 0.0;
   auto res = extract_objects(L, geo, g, flat_layers(), p);
   ASSERT_EQ(res.objects.size(), 2u);
-  EXPECT_EQ(res.objects[0].kind, "hanging");
+  EXPECT_EQ(res.objects[0].kind, ObjectKind::kHanging);
   EXPECT_FALSE(res.objects[0].on_floor);
   EXPECT_NEAR(res.objects[0].z_min_m, 1.6, 1e-9);
-  EXPECT_EQ(res.objects[1].kind, "furniture");
+  EXPECT_EQ(res.objects[1].kind, ObjectKind::kFurniture);
   p.hanging_min_clearance_m = 1.7;
   res = extract_objects(L, geo, g, flat_layers(), p);
-  EXPECT_EQ(res.objects[0].kind, "furniture");
+  EXPECT_EQ(res.objects[0].kind, ObjectKind::kFurniture);
 }
 
 TEST(Objects, TouchingObjectsOfDifferentHeightsAreSplit) {
@@ -321,7 +321,7 @@ TEST(Objects, FreeStandingWallComponentsArePillars) {
   const auto res = extract_objects(L, geo, g, layers, {});
   std::vector<const FurnitureObject*> pillars;
   for (const auto& o : res.objects)
-    if (o.kind == "pillar") pillars.push_back(&o);
+    if (o.kind == ObjectKind::kPillar) pillars.push_back(&o);
   ASSERT_EQ(pillars.size(), 2u);
   const bool first_is_round = pillars[0]->min_cell.col < 40;
   const FurnitureObject& round = *pillars[first_is_round ? 0 : 1];
@@ -339,7 +339,8 @@ TEST(Objects, FreeStandingWallComponentsArePillars) {
   // pillar_max_extent_m = 0: none.
   ObjectParams off;
   off.pillar_max_extent_m = 0.0;
-  for (const auto& o : extract_objects(L, geo, g, layers, off).objects) EXPECT_NE(o.kind, "pillar");
+  for (const auto& o : extract_objects(L, geo, g, layers, off).objects)
+    EXPECT_NE(o.kind, ObjectKind::kPillar);
 }
 
 TEST(Objects, LampsHangBelowTheCeilingWithSpaceUnderThem) {
@@ -381,7 +382,7 @@ TEST(Objects, LampsHangBelowTheCeilingWithSpaceUnderThem) {
   const auto res = extract_objects(L, geo, g, layers, {});
   std::vector<const FurnitureObject*> lamps;
   for (const auto& o : res.objects)
-    if (o.kind == "lamp") lamps.push_back(&o);
+    if (o.kind == ObjectKind::kLamp) lamps.push_back(&o);
   ASSERT_EQ(lamps.size(), 2u);
   for (const auto* o : lamps) {
     EXPECT_FALSE(o->on_floor);
@@ -406,7 +407,8 @@ TEST(Objects, LampsHangBelowTheCeilingWithSpaceUnderThem) {
   EXPECT_EQ(crops[static_cast<std::size_t>(table - 1)], std::vector<std::size_t>{1});
   ObjectParams off;
   off.lamp_max_extent_m = 0.0;
-  for (const auto& o : extract_objects(L, geo, g, layers, off).objects) EXPECT_NE(o.kind, "lamp");
+  for (const auto& o : extract_objects(L, geo, g, layers, off).objects)
+    EXPECT_NE(o.kind, ObjectKind::kLamp);
 }
 
 TEST(Objects, CropHoldsExactlyThePointsOfTheRegion) {
@@ -488,7 +490,8 @@ SceneScore score_scene(std::uint64_t seed, double min_area_m2) {
     if (std::abs(indoormap::signed_area(t.footprint)) >= min_area_m2) truth_big.push_back(e);
   }
   for (const auto& o : objs.objects) {
-    if (o.kind == "hanging" || o.kind == "lamp") continue;  // floor items only, as map-eval does
+    if (o.kind == ObjectKind::kHanging || o.kind == ObjectKind::kLamp)
+      continue;  // floor items only, as map-eval does
     sim::EvalObject e{std::to_string(o.id), "", o.footprint_m, std::nullopt, std::nullopt, true};
     if (o.has_height) {
       e.z_min_m = o.z_min_m;
@@ -507,7 +510,7 @@ SceneScore score_scene(std::uint64_t seed, double min_area_m2) {
     if (!t.on_floor && t.room == scanned_room)
       truth_lamps.push_back({t.id, "", t.footprint, t.z_min_m, t.z_max_m, false});
   for (const auto& o : objs.objects)
-    if (o.kind == "hanging" || o.kind == "lamp")
+    if (o.kind == ObjectKind::kHanging || o.kind == ObjectKind::kLamp)
       result_lamps.push_back(
           {std::to_string(o.id), "", o.footprint_m, o.z_min_m, o.z_max_m, false});
   const sim::ObjectScores lamp_scores = sim::evaluate_objects(truth_lamps, result_lamps, 0.5);
@@ -524,10 +527,11 @@ SceneScore score_scene(std::uint64_t seed, double min_area_m2) {
                   t.id.c_str(), *t.z_min_m, *t.z_max_m, bid.c_str(), best);
     }
     for (const auto& o : objs.objects)
-      if (o.kind == "hanging" || o.kind == "lamp")
+      if (o.kind == ObjectKind::kHanging || o.kind == ObjectKind::kLamp)
         std::printf("  seed %llu result %d %s at %.2f,%.2f %.2fx%.2f z %.2f-%.2f\n",
-                    (unsigned long long)seed, o.id, o.kind.c_str(), o.box.center_m.x(),
-                    o.box.center_m.y(), o.box.length_m, o.box.width_m, o.z_min_m, o.z_max_m);
+                    (unsigned long long)seed, o.id, std::string(to_string(o.kind)).c_str(),
+                    o.box.center_m.x(), o.box.center_m.y(), o.box.length_m, o.box.width_m,
+                    o.z_min_m, o.z_max_m);
   }
   const sim::ObjectScores for_recall = sim::evaluate_objects(truth_big, result_all, 0.5);
   const sim::ObjectScores for_precision = sim::evaluate_objects(truth_all, result_big, 0.5);
@@ -643,4 +647,25 @@ TEST(ObjectsAccuracy, TwentyHeldOutScenes) {
   EXPECT_GE(t.recall, 0.85);
   EXPECT_GE(t.precision, 0.85);
   EXPECT_LE(t.median_height_error_m, 0.05);
+}
+
+TEST(ObjectKind, NamesRoundTripAndUnknownNamesAreNullopt) {
+  for (const ObjectKind k : kObjectKinds) EXPECT_EQ(parse_object_kind(to_string(k)), k);
+  EXPECT_EQ(to_string(ObjectKind::kFurniture), "furniture");
+  EXPECT_EQ(to_string(ObjectKind::kInstallation), "installation");
+  EXPECT_FALSE(parse_object_kind("sofa"));
+  EXPECT_FALSE(stands_on_floor(ObjectKind::kHanging));
+  EXPECT_FALSE(stands_on_floor(ObjectKind::kLamp));
+  EXPECT_TRUE(stands_on_floor(ObjectKind::kPillar));
+}
+
+TEST(ObjectParams, ValidatedByExtractObjects) {
+  EXPECT_NO_THROW(validate(ObjectParams{}));
+  ObjectParams bad;
+  bad.top_percentile = 101;
+  EXPECT_THROW(validate(bad), UsageError);
+  const Grid<Cell> layout(2, 2, Cell::kFree);
+  const GridGeometry geo({0.0, 0.0}, 0.1, 2, 2);
+  EXPECT_THROW(extract_objects(layout, geo, cloud::VoxelGrid{}, cloud::LayerAnalysis{}, bad),
+               UsageError);  // checked first, before the sizes
 }

@@ -510,7 +510,7 @@ TEST(PlanRoute, OutputsErrorsAndExitCodes) {
 }
 
 TEST(PlanConfig, MalformedFilesAreTypedErrorsNamingFileAndLine) {
-  // The planner config shares the pipeline config's checks (apps/common/config_tree.hpp): a list
+  // The planner config shares the pipeline config's checks (apps/common/config_reader.hpp): a list
   // used as a key or an unknown key is an InputError, never an untyped yaml-cpp exception.
   const auto dir = test::scratch_dir();
   test::write_text(dir / "list_key.yaml", "robot:\n  [a, b]: 1\n");

@@ -104,21 +104,6 @@ PipelineConfig resolve_config(const PipelineCli& cli) {
   return c;
 }
 
-int run_guarded(const std::string& prog, const std::function<int()>& body) {
-  try {
-    return body();
-  } catch (const Error& e) {
-    std::cerr << prog << ": " << e.what() << "\n";
-    return static_cast<int>(e.exit_code());
-  } catch (const std::bad_alloc&) {
-    std::cerr << prog << ": out of memory\n";
-    return static_cast<int>(ExitCode::kFailure);
-  } catch (const std::exception& e) {
-    std::cerr << prog << ": " << e.what() << "\n";
-    return static_cast<int>(ExitCode::kFailure);
-  }
-}
-
 std::function<void(const std::string&, double)> terminal_progress() {
   if (!::isatty(STDERR_FILENO)) return {};
   return [](const std::string& file, double fraction) {

@@ -7,6 +7,7 @@
 
 #include "config.hpp"
 #include "indoormap/planning/planner.hpp"
+#include "main_guard.hpp"
 
 namespace indoormap::app {
 
@@ -34,9 +35,6 @@ void add_pipeline_options(CLI::App& app, PipelineCli& cli);
 
 /// Defaults, then the config file, then the command-line overrides; validated.
 PipelineConfig resolve_config(const PipelineCli& cli);
-
-/// Runs body, maps exceptions to the documented exit codes and prints "<prog>: <message>".
-int run_guarded(const std::string& prog, const std::function<int()>& body);
 
 /// Prints "\r<file>: 42%" on stderr when stderr is a terminal (progress of long loads).
 std::function<void(const std::string&, double)> terminal_progress();

@@ -3,14 +3,9 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
-#include <fstream>
-#include <map>
 #include <optional>
-#include <set>
-#include <sstream>
-#include <type_traits>
 
-#include "config_tree.hpp"
+#include "config_reader.hpp"
 #include "indoormap/core/errors.hpp"
 
 namespace indoormap::app {
@@ -122,112 +117,64 @@ std::string axis_name(cloud_io::UpAxis a) {
   return a == cloud_io::UpAxis::kY ? "y" : "z";
 }
 
-struct Reader {
-  const YAML::Node& root;
-  const std::string& file;
+}  // namespace
 
-  [[noreturn]] void fail(const std::string& key, const YAML::Node& n,
-                         const std::string& what) const {
-    throw InputError(file, "key '" + key + "': " + what,
-                     static_cast<std::size_t>(n.Mark().line + 1));
+// The pipeline's own field types (the generic ones are in config_reader.hpp).
+template <>
+struct ConfigValue<objects::Connectivity> {
+  static void read(const ConfigReader& rd, const YAML::Node& n, const std::string& key,
+                   objects::Connectivity& v) {
+    const auto k = rd.integer<int>(n, key);
+    if (k != 4 && k != 8) rd.fail(n, key, "expected 4 or 8");
+    v = k == 4 ? objects::Connectivity::k4 : objects::Connectivity::k8;
   }
+  static void emit(YAML::Emitter& out, objects::Connectivity v) { out << static_cast<int>(v); }
+  static nlohmann::json json(objects::Connectivity v) { return static_cast<int>(v); }
+};
 
-  template <class T>
-  void operator()(const char* section, const char* key, T& v) const {
-    const YAML::Node sec = root[section];
-    if (!sec) return;
-    const YAML::Node n = sec[key];
-    if (!n) return;
-    const std::string full = std::string(section) + "." + key;
-    try {
-      if constexpr (std::is_same_v<T, objects::Connectivity>) {
-        const auto k = n.as<int>();
-        if (k != 4 && k != 8) fail(full, n, "expected 4 or 8");
-        v = k == 4 ? objects::Connectivity::k4 : objects::Connectivity::k8;
-      } else if constexpr (std::is_same_v<T, cloud_io::UpAxis>) {
-        const auto s = n.as<std::string>();
-        if (s == "z")
-          v = cloud_io::UpAxis::kZ;
-        else if (s == "y")
-          v = cloud_io::UpAxis::kY;
-        else
-          fail(full, n, "expected 'z' or 'y', got '" + s + "'");
-      } else if constexpr (std::is_same_v<T, std::optional<double>>) {
-        if (n.IsNull())
-          v.reset();
-        else
-          v = n.as<double>();
-      } else if constexpr (std::is_same_v<T, std::vector<Eigen::Vector3d>>) {
-        if (!n.IsSequence()) fail(full, n, "expected a list of [x, y, z]");
-        v.clear();
-        for (const auto& e : n) {
-          if (!e.IsSequence() || e.size() != 3) fail(full, e, "each scanner is [x, y, z]");
-          v.emplace_back(e[0].as<double>(), e[1].as<double>(), e[2].as<double>());
-        }
-      } else if constexpr (std::is_same_v<T, bool>) {
-        v = n.as<bool>();
-      } else if constexpr (std::is_integral_v<T>) {
-        const auto k = config_integer<T>(n);
-        if (!k) fail(full, n, "expected an integer in range");
-        v = *k;
-      } else {
-        v = n.as<T>();
-      }
-    } catch (const YAML::Exception&) {
-      fail(full, n, std::is_same_v<T, bool> ? "expected true or false" : "expected a number");
+template <>
+struct ConfigValue<cloud_io::UpAxis> {
+  static void read(const ConfigReader& rd, const YAML::Node& n, const std::string& key,
+                   cloud_io::UpAxis& v) {
+    const auto s = rd.text(n, key);
+    if (s == "z")
+      v = cloud_io::UpAxis::kZ;
+    else if (s == "y")
+      v = cloud_io::UpAxis::kY;
+    else
+      rd.fail(n, key, "expected 'z' or 'y', got '" + s + "'");
+  }
+  static void emit(YAML::Emitter& out, cloud_io::UpAxis v) { out << axis_name(v); }
+  static nlohmann::json json(cloud_io::UpAxis v) { return axis_name(v); }
+};
+
+/// input.scanners: a list of [x, y, z].
+template <>
+struct ConfigValue<std::vector<Eigen::Vector3d>> {
+  static void read(const ConfigReader& rd, const YAML::Node& n, const std::string& key,
+                   std::vector<Eigen::Vector3d>& v) {
+    if (!n.IsSequence()) rd.fail(n, key, "expected a list of [x, y, z]");
+    v.clear();
+    for (const auto& e : n) {
+      if (!e.IsSequence() || e.size() != 3) rd.fail(e, key, "each scanner is [x, y, z]");
+      v.emplace_back(rd.number(e[0], key), rd.number(e[1], key), rd.number(e[2], key));
     }
+  }
+  static void emit(YAML::Emitter& out, const std::vector<Eigen::Vector3d>& v) {
+    out << YAML::Flow << YAML::BeginSeq;
+    for (const auto& p : v)
+      out << YAML::Flow << YAML::BeginSeq << p.x() << p.y() << p.z() << YAML::EndSeq;
+    out << YAML::EndSeq;
+  }
+  static nlohmann::json json(const std::vector<Eigen::Vector3d>& v) {
+    nlohmann::json a = nlohmann::json::array();
+    for (const auto& p : v) a.push_back({p.x(), p.y(), p.z()});
+    return a;
   }
 };
 
-}  // namespace
-
-YAML::Node load_config_tree(const std::string& path,
-                            const std::map<std::string, std::set<std::string>>& known) {
-  YAML::Node root;
-  try {
-    std::ifstream in(path);
-    if (!in) throw InputError(path, "cannot open the config file");
-    root = YAML::Load(in);
-  } catch (const YAML::Exception& e) {
-    throw InputError(path, "invalid YAML: " + e.msg, static_cast<std::size_t>(e.mark.line + 1));
-  }
-  if (root.IsNull()) return root;  // an empty file means "all defaults"
-  if (!root.IsMap()) throw InputError(path, "the config must be a mapping of sections");
-  std::string sections;
-  for (const auto& [name, keys] : known) sections += (sections.empty() ? "" : ", ") + name;
-  // A key that is not a string (a list or a mapping used as a key) is refused by name.
-  auto key_of = [&](const YAML::Node& k) {
-    if (!k.IsScalar())
-      throw InputError(path, "keys must be names, not lists or mappings",
-                       static_cast<std::size_t>(k.Mark().line + 1));
-    return k.Scalar();
-  };
-  for (const auto& sec : root) {
-    const auto name = key_of(sec.first);
-    const auto it = known.find(name);
-    if (it == known.end())
-      throw InputError(path, "unknown section '" + name + "' (sections: " + sections + ")",
-                       static_cast<std::size_t>(sec.first.Mark().line + 1));
-    if (sec.second.IsNull()) continue;
-    if (!sec.second.IsMap())
-      throw InputError(path, "section '" + name + "' must be a mapping",
-                       static_cast<std::size_t>(sec.second.Mark().line + 1));
-    for (const auto& kv : sec.second) {
-      const auto key = key_of(kv.first);
-      if (!it->second.count(key))
-        throw InputError(path, "unknown key '" + name + "." + key + "'",
-                         static_cast<std::size_t>(kv.first.Mark().line + 1));
-    }
-  }
-  return root;
-}
-
 void merge_config_file(PipelineConfig& config, const std::string& path) {
-  std::map<std::string, std::set<std::string>> known;
-  visit(config, [&](const char* s, const char* k, auto&) { known[s].insert(k); });
-  const YAML::Node root = load_config_tree(path, known);
-  if (root.IsNull()) return;
-  visit(config, Reader{root, path});
+  read_config_file(path, [&](auto&& f) { visit(config, f); });
 }
 
 void validate(const PipelineConfig& c) {
@@ -240,89 +187,20 @@ void validate(const PipelineConfig& c) {
   cloud::validate(c.map.voxel);
   cloud::validate(c.map.ghosts);
   cloud::validate(c.map.layers);
-  const auto& lo = c.map.layout;
-  require(lo.furniture_closing_iterations >= 0 && lo.furniture_closing_iterations <= 20,
-          "layout.furniture_closing_iterations: must be in [0, 20]");
-  require(lo.flood_barrier_closing >= 0 && lo.flood_barrier_closing <= 10,
-          "layout.flood_barrier_closing: must be in [0, 10]");
-  require(lo.enclosed_max_area_m2 >= 0, "layout.enclosed_max_area_m2: must be >= 0");
-  require(lo.passage_min_lines >= 0 && lo.passage_min_lines <= 4,
-          "layout.passage_min_lines: must be in [0, 4] (0: the paper's row and column passes)");
-  require(lo.seed_search_radius_m >= 0, "layout.seed_search_radius_m: must be >= 0");
-  require(lo.hanging_max_area_m2 >= 0, "layout.hanging_max_area_m2: must be >= 0");
-  require(lo.hanging_gap_m > 0, "layout.hanging_gap_m: must be > 0");
-  require(lo.hanging_max_extent_m >= 0, "layout.hanging_max_extent_m: must be >= 0");
-  const auto& ob = c.objects;
-  require(ob.min_area_m2 >= 0, "objects.min_area_m2: must be >= 0");
-  require(ob.crop_margin_m >= 0 && ob.crop_margin_m <= 10,
-          "objects.crop_margin_m: must be in [0, 10]");
-  require(ob.split_height_step_m >= 0, "objects.split_height_step_m: must be >= 0 (0: off)");
-  require(ob.hanging_min_clearance_m > 0, "objects.hanging_min_clearance_m: must be > 0");
-  require(ob.pillar_max_extent_m >= 0, "objects.pillar_max_extent_m: must be >= 0");
-  require(ob.lamp_max_extent_m >= 0, "objects.lamp_max_extent_m: must be >= 0");
-  require(ob.max_vertical_gap_m > 0, "objects.max_vertical_gap_m: must be > 0");
-  require(ob.top_percentile >= 0 && ob.top_percentile <= 100,
-          "objects.top_percentile: must be in [0, 100]");
-  border::validate(c.border);  // throws UsageError naming border.<key>
+  layout::validate(c.map.layout);  // throws UsageError naming layout.<key>
+  objects::validate(c.objects);    // objects.<key>
+  border::validate(c.border);      // throws UsageError naming border.<key>
   validate(c.plan);
 }
 
 std::string to_yaml(const PipelineConfig& config) {
   PipelineConfig c = config;
-  YAML::Emitter out;
-  out.SetDoublePrecision(15);  // 0.2, not 0.20000000000000001; still reads back as the same value
-  out << YAML::BeginMap;
-  std::string open;
-  visit(c, [&](const char* s, const char* k, auto& v) {
-    using T = std::decay_t<decltype(v)>;
-    if (open != s) {
-      if (!open.empty()) out << YAML::EndMap;
-      out << YAML::Key << s << YAML::Value << YAML::BeginMap;
-      open = s;
-    }
-    out << YAML::Key << k << YAML::Value;
-    if constexpr (std::is_same_v<T, objects::Connectivity>) {
-      out << static_cast<int>(v);
-    } else if constexpr (std::is_same_v<T, cloud_io::UpAxis>) {
-      out << axis_name(v);
-    } else if constexpr (std::is_same_v<T, std::optional<double>>) {
-      if (v)
-        out << *v;
-      else
-        out << YAML::Null;
-    } else if constexpr (std::is_same_v<T, std::vector<Eigen::Vector3d>>) {
-      out << YAML::Flow << YAML::BeginSeq;
-      for (const auto& p : v)
-        out << YAML::Flow << YAML::BeginSeq << p.x() << p.y() << p.z() << YAML::EndSeq;
-      out << YAML::EndSeq;
-    } else {
-      out << v;
-    }
-  });
-  out << YAML::EndMap << YAML::EndMap;
-  return std::string(out.c_str()) + "\n";
+  return config_to_yaml([&](auto&& f) { visit(c, f); });
 }
 
 nlohmann::json to_json(const PipelineConfig& config) {
   PipelineConfig c = config;
-  nlohmann::json j = nlohmann::json::object();
-  visit(c, [&](const char* s, const char* k, auto& v) {
-    using T = std::decay_t<decltype(v)>;
-    auto& slot = j[s][k];
-    if constexpr (std::is_same_v<T, objects::Connectivity>) {
-      slot = static_cast<int>(v);
-    } else if constexpr (std::is_same_v<T, cloud_io::UpAxis>) {
-      slot = axis_name(v);
-    } else if constexpr (std::is_same_v<T, std::optional<double>>) {
-      slot = v ? nlohmann::json(*v) : nlohmann::json(nullptr);
-    } else if constexpr (std::is_same_v<T, std::vector<Eigen::Vector3d>>) {
-      slot = nlohmann::json::array();
-      for (const auto& p : v) slot.push_back({p.x(), p.y(), p.z()});
-    } else {
-      slot = v;
-    }
-  });
-  return j;
+  return config_to_json([&](auto&& f) { visit(c, f); });
 }
 
 }  // namespace indoormap::app

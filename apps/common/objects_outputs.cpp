@@ -19,7 +19,7 @@ json object_json(const objects::FurnitureObject& o) {
   for (const auto& p : o.footprint_m) fp.push_back({p.x(), p.y()});
   json j = {
       {"id", o.id},
-      {"kind", o.kind},
+      {"kind", std::string(to_string(o.kind))},
       {"cells", o.cells},
       {"start_cell", {o.start_cell.col, o.start_cell.row}},
       {"bbox_cells",
@@ -85,7 +85,7 @@ std::vector<std::string> write_object_outputs(const fs::path& out, const layout:
         << "id,kind,cells,area_m2,center_x_m,center_y_m,length_m,width_m,angle_deg,z_min_m,z_max_m,"
            "point_count,touches_wall\n";
     for (const auto& o : res.objects) {
-      csv << o.id << ',' << o.kind << ',' << o.cells << ',' << o.area_m2 << ','
+      csv << o.id << ',' << to_string(o.kind) << ',' << o.cells << ',' << o.area_m2 << ','
           << o.box.center_m.x() << ',' << o.box.center_m.y() << ',' << o.box.length_m << ','
           << o.box.width_m << ',' << o.box.angle_deg << ',';
       if (o.has_height)
@@ -111,8 +111,8 @@ std::vector<std::string> write_object_outputs(const fs::path& out, const layout:
       ov.points_m = o.footprint_m;
       ov.label = std::to_string(o.id);
       std::size_t k = 0;
-      while (k + 1 < colours.size() && colours[k].first != o.kind) ++k;
-      if (colours[k].first != o.kind) k = 0;
+      while (k + 1 < colours.size() && colours[k].first != to_string(o.kind)) ++k;
+      if (colours[k].first != to_string(o.kind)) k = 0;
       used[k] = true;
       ov.rgb = colours[k].second;
       ro.overlays.push_back(ov);
@@ -137,7 +137,8 @@ void add_border_objects(objects::ObjectsResult& objs, const border::BorderResult
     if (covered) continue;
     objects::FurnitureObject o;
     o.id = static_cast<int>(objs.objects.size()) + 1;
-    o.kind = io.kind == border::ComponentKind::kRing ? "column" : "installation";
+    o.kind =
+        io.kind == border::ComponentKind::kRing ? ObjectKind::kColumn : ObjectKind::kInstallation;
     o.cells = io.cells;
     o.start_cell = io.min;
     o.min_cell = io.min;

@@ -9,11 +9,13 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "config_reader.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/sim/eval.hpp"
 #include "indoormap/sim/output.hpp"
 #include "indoormap/version.hpp"
+#include "main_guard.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
@@ -21,24 +23,15 @@ using nlohmann::ordered_json;
 
 namespace {
 
-struct Params {
-  double min_object_iou = 0.5;
-  bool include_hanging = false;  ///< also expect lamps (not standing on the floor) as objects
-};
+/// Every key of the config file (-c, config/map-eval.yaml), top-level keys.
+template <class F>
+void visit(sim::EvalParams& p, F&& f) {
+  f("", "min_object_iou", app::finite(p.min_object_iou));
+  f("", "objects_include_hanging", p.include_hanging);
+}
 
 std::size_t yaml_line(const YAML::Node& n) {
   return n.IsDefined() && n.Mark().line >= 0 ? n.Mark().line + 1 : 0;
-}
-
-YAML::Node load_yaml(const fs::path& file) {
-  try {
-    return YAML::LoadFile(file.string());
-  } catch (const YAML::BadFile&) {
-    throw InputError(file.string(), "cannot open");
-  } catch (const YAML::Exception& e) {
-    throw InputError(file.string(), "invalid YAML: " + e.msg,
-                     e.mark.line >= 0 ? e.mark.line + 1 : 0);
-  }
 }
 
 double yaml_number(const YAML::Node& n, const fs::path& file, const std::string& key) {
@@ -52,31 +45,6 @@ double yaml_number(const YAML::Node& n, const fs::path& file, const std::string&
   throw InputError(file.string(), "key '" + key + "': expected a finite number", yaml_line(n));
 }
 
-void apply_config(const fs::path& file, Params& p) {
-  const YAML::Node root = load_yaml(file);
-  if (root.IsNull()) return;
-  if (!root.IsMap()) throw InputError(file.string(), "expected a mapping");
-  for (const auto& kv : root) {
-    const std::string k = kv.first.as<std::string>();
-    if (k == "min_object_iou") {
-      p.min_object_iou = yaml_number(kv.second, file, k);
-    } else if (k == "objects_include_hanging") {
-      try {
-        p.include_hanging = kv.second.as<bool>();
-      } catch (const YAML::Exception&) {
-        throw InputError(file.string(), "key '" + k + "': expected true or false",
-                         yaml_line(kv.second));
-      }
-    } else {
-      throw InputError(file.string(),
-                       "unknown key '" + k + "' (expected min_object_iou, objects_include_hanging)",
-                       yaml_line(kv.first));
-    }
-  }
-  if (!(p.min_object_iou > 0 && p.min_object_iou <= 1))
-    throw InputError(file.string(), "key 'min_object_iou': must be in (0, 1]");
-}
-
 /// Grid geometry of a result layout: layout.yaml if present, else map.yaml (same grid).
 GridGeometry result_geometry(const fs::path& dir, const Grid<std::uint8_t>& image,
                              std::string& source) {
@@ -87,7 +55,7 @@ GridGeometry result_geometry(const fs::path& dir, const Grid<std::uint8_t>& imag
         (dir / "map.yaml").string(),
         "missing: layout.pgm needs map.yaml (or layout.yaml) for its resolution and origin");
   source = yaml.filename().string();
-  const YAML::Node root = load_yaml(yaml);
+  const YAML::Node root = app::load_yaml_file(yaml.string());
   if (!root.IsMap()) throw InputError(yaml.string(), "expected a ROS map YAML mapping");
   const double res = yaml_number(root["resolution"], yaml, "resolution");
   if (!(res > 0))
@@ -195,7 +163,7 @@ int run(int argc, char** argv) {
       "is reported as \"missing\" in eval.json. Exit codes: 0 done, 2 bad usage or input, 3 "
       "nothing to evaluate, 1 other.");
   std::string truth_file, result_dir, out_dir, config_file;
-  Params p;
+  sim::EvalParams p;
   bool print_config = false;
   double min_iou = -1;
   bool include_hanging = false;
@@ -214,12 +182,12 @@ int run(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : static_cast<int>(ExitCode::kBadInput);
   }
-  if (!config_file.empty()) apply_config(config_file, p);
+  if (!config_file.empty()) app::read_config_file(config_file, [&](auto&& f) { visit(p, f); });
   if (min_iou > 0) p.min_object_iou = min_iou;
   if (include_hanging) p.include_hanging = true;
+  sim::validate(p);
   if (print_config) {
-    std::cout << "min_object_iou: " << p.min_object_iou << "\n"
-              << "objects_include_hanging: " << (p.include_hanging ? "true" : "false") << "\n";
+    std::cout << app::config_to_yaml([&](auto&& f) { visit(p, f); });
     return 0;
   }
   if (truth_file.empty() || result_dir.empty())
@@ -257,16 +225,10 @@ int run(int argc, char** argv) {
   }
   // Objects.
   if (fs::exists(dir / "objects.json")) {
-    std::vector<sim::EvalObject> expected;
-    for (const auto& f : truth.furniture)
-      if (f.on_floor || p.include_hanging) expected.push_back(f);
-    // Without --include-hanging both sides are what stands on the floor: result objects of kind
-    // "hanging" or "lamp" are left out as the truth's lamps are.
-    auto objects = sim::read_objects_json(dir / "objects.json");
-    if (!p.include_hanging)
-      std::erase_if(objects, [](const sim::EvalObject& o) { return !o.on_floor; });
+    // Without --include-hanging both sides are what stands on the floor (sim::evaluate_objects).
+    const auto objects = sim::read_objects_json(dir / "objects.json");
     ordered_json j = {{"status", "ok"}, {"file", "objects.json"}};
-    j.update(objects_json(sim::evaluate_objects(expected, objects, p.min_object_iou)));
+    j.update(objects_json(sim::evaluate_objects(truth.furniture, objects, p)));
     report["objects"] = j;
     ++evaluated;
   } else {
@@ -300,13 +262,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const Error& e) {
-    std::fprintf(stderr, "map-eval: %s\n", e.what());
-    return static_cast<int>(e.exit_code());
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "map-eval: %s\n", e.what());
-    return 1;
-  }
+  return app::run_guarded("map-eval", [&] { return run(argc, argv); });
 }

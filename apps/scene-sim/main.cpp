@@ -13,6 +13,7 @@
 #include "indoormap/sim/random_scene.hpp"
 #include "indoormap/sim/simulate.hpp"
 #include "indoormap/version.hpp"
+#include "main_guard.hpp"
 #include "scene_yaml.hpp"
 
 namespace fs = std::filesystem;
@@ -21,14 +22,17 @@ using namespace indoormap;
 namespace {
 
 int run(int argc, char** argv) {
-  CLI::App app{"scene-sim: simulates a terrestrial laser scanner (Riegl VZ-400 like) in a furnished indoor scene "
-               "and writes the cloud with its ground truth."};
+  CLI::App app{
+      "scene-sim: simulates a terrestrial laser scanner (Riegl VZ-400 like) in a furnished indoor "
+      "scene "
+      "and writes the cloud with its ground truth."};
   app.footer(
       "Examples:\n"
       "  scene-sim scenes/office.yaml -o clouds/office\n"
       "  scene-sim --random --seed 7 --rooms 3 -o /tmp/scene7 --3dtk --sector-deg 40\n"
       "  scene-sim scenes/office.yaml --print-config\n"
-      "Outputs in DIR: cloud.pcd, ground_truth.json, ground_truth_layout.{pgm,png,yaml}, summary.json,\n"
+      "Outputs in DIR: cloud.pcd, ground_truth.json, ground_truth_layout.{pgm,png,yaml}, "
+      "summary.json,\n"
       "and with --3dtk a 3dtk/ scan directory. Exit codes: 0 done, 2 bad usage or input, 1 other.");
   std::string scene_file, out_dir, config_file;
   bool random = false, print_config = false, tdtk = false, quiet = false;
@@ -37,16 +41,23 @@ int run(int argc, char** argv) {
   double sector_deg = -1, step_deg = 0, truth_cell = 0;
   app.add_option("scene", scene_file, "Scene description (YAML, see docs/scene-sim.md)");
   app.add_flag("--random", random, "Generate a plausible random scene instead of reading one");
-  auto* seed_opt = app.add_option("--seed", seed, "Seed of the random scene and of the noise (default 1; for a "
-                                                  "scene file it overrides the file's seed)");
-  app.add_option("--rooms", rooms, "Random scene: number of furnished rooms (default 1)")->check(CLI::Range(1, 200));
+  auto* seed_opt = app.add_option("--seed", seed,
+                                  "Seed of the random scene and of the noise (default 1; for a "
+                                  "scene file it overrides the file's seed)");
+  app.add_option("--rooms", rooms, "Random scene: number of furnished rooms (default 1)")
+      ->check(CLI::Range(1, 200));
   app.add_option("-o,--out", out_dir, "Output directory (created if needed)");
-  app.add_option("-c,--config", config_file, "Config file (YAML; keys scanner, output, random; see config/scene-sim.yaml)");
+  app.add_option("-c,--config", config_file,
+                 "Config file (YAML; keys scanner, output, random; see config/scene-sim.yaml)");
   app.add_flag("--3dtk", tdtk, "Also write a 3DTK scan directory DIR/3dtk (scanNNN.3d + .pose)");
-  app.add_option("--sector-deg", sector_deg, "Split every position into scans of this many degrees (3DTK; 0: whole turn)")
+  app.add_option("--sector-deg", sector_deg,
+                 "Split every position into scans of this many degrees (3DTK; 0: whole turn)")
       ->check(CLI::Range(0.0, 360.0));
-  app.add_option("--step-deg", step_deg, "Angular step, azimuth and elevation (degrees)")->check(CLI::Range(0.005, 10.0));
-  app.add_option("--truth-cell", truth_cell, "Cell of the ground-truth layout (metres, default 0.05)")->check(CLI::Range(0.001, 10.0));
+  app.add_option("--step-deg", step_deg, "Angular step, azimuth and elevation (degrees)")
+      ->check(CLI::Range(0.005, 10.0));
+  app.add_option("--truth-cell", truth_cell,
+                 "Cell of the ground-truth layout (metres, default 0.05)")
+      ->check(CLI::Range(0.001, 10.0));
   app.add_flag("--print-config", print_config, "Print the effective parameters as YAML and exit");
   app.add_flag("-q,--quiet", quiet, "No progress messages");
   try {
@@ -73,7 +84,9 @@ int run(int argc, char** argv) {
     scene = sim::random_scene(seed, config.random);
     scene.scanner = config.scanner;
   } else {
-    scene = scene_sim::parse_scene_file(scene_file, config.scanner, key_lines);
+    auto parsed = scene_sim::parse_scene_file(scene_file, config.scanner);
+    scene = std::move(parsed.scene);
+    key_lines = std::move(parsed.key_lines);
     if (seed_opt->count() > 0) scene.seed = seed;
   }
   if (step_deg > 0) scene.scanner.azimuth_step_deg = scene.scanner.elevation_step_deg = step_deg;
@@ -98,7 +111,8 @@ int run(int argc, char** argv) {
       const auto cut = key.find_last_of(".[");
       key = cut == std::string::npos ? "" : key.substr(0, cut);
     }
-    const std::string file = random ? "<random scene, seed " + std::to_string(seed) + ">" : scene_file;
+    const std::string file =
+        random ? "<random scene, seed " + std::to_string(seed) + ">" : scene_file;
     throw InputError(file, "key '" + p.key + "': " + p.problem, line);
   }
 
@@ -107,13 +121,16 @@ int run(int argc, char** argv) {
   sim::SimOptions sim_options;
   sim_options.sector_deg = config.sector_deg;
   if (!quiet)
-    std::fprintf(stderr, "scene-sim: %s: %zu room(s), %zu furniture item(s), %zu scanner position(s), %llu rays\n",
-                 scene.name.c_str(), scene.rooms.size(), scene.furniture.size(), scene.scanners.size(),
-                 static_cast<unsigned long long>(sim::ray_count(scene)));
+    std::fprintf(
+        stderr,
+        "scene-sim: %s: %zu room(s), %zu furniture item(s), %zu scanner position(s), %llu rays\n",
+        scene.name.c_str(), scene.rooms.size(), scene.furniture.size(), scene.scanners.size(),
+        static_cast<unsigned long long>(sim::ray_count(scene)));
   const sim::SimResult result = sim::simulate(scene, sim_options);
   const auto t1 = std::chrono::steady_clock::now();
   if (result.points.empty()) {
-    std::fprintf(stderr, "scene-sim: no point was returned (every ray missed or was out of range)\n");
+    std::fprintf(stderr,
+                 "scene-sim: no point was returned (every ray missed or was out of range)\n");
     return static_cast<int>(ExitCode::kNoResult);
   }
   sim::OutputOptions out_options = config.output;
@@ -133,15 +150,16 @@ int run(int argc, char** argv) {
   summary["mixed_pixels"] = result.mixed_pixels;
   summary["scans"] = result.scans.size();
   summary["parameters"] = nlohmann::ordered_json::object();
-  summary["parameters"]["scanner"] = {{"azimuth_step_deg", config.scanner.azimuth_step_deg},
-                                      {"elevation_step_deg", config.scanner.elevation_step_deg},
-                                      {"elevation_min_deg", config.scanner.elevation_min_deg},
-                                      {"elevation_max_deg", config.scanner.elevation_max_deg},
-                                      {"range_min_m", config.scanner.range_min_m},
-                                      {"range_max_m", config.scanner.range_max_m},
-                                      {"range_sigma_m", config.scanner.range_sigma_m},
-                                      {"mixed_pixel_probability", config.scanner.mixed_pixel_probability},
-                                      {"mixed_pixel_min_jump_m", config.scanner.mixed_pixel_min_jump_m}};
+  summary["parameters"]["scanner"] = {
+      {"azimuth_step_deg", config.scanner.azimuth_step_deg},
+      {"elevation_step_deg", config.scanner.elevation_step_deg},
+      {"elevation_min_deg", config.scanner.elevation_min_deg},
+      {"elevation_max_deg", config.scanner.elevation_max_deg},
+      {"range_min_m", config.scanner.range_min_m},
+      {"range_max_m", config.scanner.range_max_m},
+      {"range_sigma_m", config.scanner.range_sigma_m},
+      {"mixed_pixel_probability", config.scanner.mixed_pixel_probability},
+      {"mixed_pixel_min_jump_m", config.scanner.mixed_pixel_min_jump_m}};
   summary["parameters"]["output"] = {{"truth_cell_m", config.output.truth_cell_m},
                                      {"3dtk", config.output.write_3dtk},
                                      {"sector_deg", config.sector_deg}};
@@ -150,24 +168,14 @@ int run(int argc, char** argv) {
   summary["points_per_second"] = sim_s > 0 ? result.points.size() / sim_s : 0.0;
   write_file_atomic(fs::path(out_dir) / "summary.json", summary.dump(2) + "\n");
   if (!quiet)
-    std::fprintf(stderr, "scene-sim: %zu points (%.1f M points/s), outputs in %s\n", result.points.size(),
-                 sim_s > 0 ? result.points.size() / sim_s / 1e6 : 0.0, out_dir.c_str());
+    std::fprintf(stderr, "scene-sim: %zu points (%.1f M points/s), outputs in %s\n",
+                 result.points.size(), sim_s > 0 ? result.points.size() / sim_s / 1e6 : 0.0,
+                 out_dir.c_str());
   return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const Error& e) {
-    std::fprintf(stderr, "scene-sim: %s\n", e.what());
-    return static_cast<int>(e.exit_code());
-  } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "scene-sim: out of memory\n");
-    return 1;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "scene-sim: %s\n", e.what());
-    return 1;
-  }
+  return app::run_guarded("scene-sim", [&] { return run(argc, argv); });
 }

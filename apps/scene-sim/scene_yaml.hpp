@@ -1,8 +1,7 @@
 #pragma once
-// YAML front of scene-sim: the scene file schema (docs/scene-sim.md) and the config file.
-// Errors are InputError naming the file, the key and the line.
-#include <yaml-cpp/yaml.h>
-
+// YAML front of scene-sim: the scene file schema (docs/scene-sim.md) and the config file, both
+// read with the rules of the one config reader (apps/common/config_reader.hpp). Errors are
+// InputError naming the file, the key and the line.
 #include <map>
 #include <string>
 
@@ -21,16 +20,17 @@ struct Config {
   sim::RandomSceneParams random;
 };
 
-/// Reads a YAML file, turning yaml-cpp's exceptions into InputError (file, problem, line).
-YAML::Node load_yaml_file(const std::string& file);
-
-/// Applies a config file (keys scanner, output, random) on top of config.
+/// Applies a config file (sections scanner, output, random) on top of config.
 void apply_config_file(const std::string& file, Config& config);
 
+struct ParsedScene {
+  sim::Scene scene;
+  /// The 1-based line of every key path ("rooms[0].doors[1]"), for the messages of check_scene.
+  std::map<std::string, std::size_t> key_lines;
+};
+
 /// Parses a scene file. The scene's own `scanner:` block overrides keys of base_scanner.
-/// key_lines receives the 1-based line of every key path ("rooms[0].doors[1]") for messages.
-sim::Scene parse_scene_file(const std::string& file, const sim::ScannerParams& base_scanner,
-                            std::map<std::string, std::size_t>& key_lines);
+ParsedScene parse_scene_file(const std::string& file, const sim::ScannerParams& base_scanner);
 
 /// The effective configuration as YAML (for --print-config), readable by apply_config_file.
 std::string config_to_yaml(const Config& config);

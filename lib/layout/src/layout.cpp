@@ -139,12 +139,30 @@ Grid<std::uint8_t> passage_area(const Grid<std::uint8_t>& walls, int min_lines) 
   return count;
 }
 
+void validate(const LayoutParams& lo) {
+  auto require = [](bool ok, const std::string& what) {
+    if (!ok) throw UsageError("invalid parameter " + what);
+  };
+  require(lo.furniture_closing_iterations >= 0 && lo.furniture_closing_iterations <= 20,
+          "layout.furniture_closing_iterations: must be in [0, 20]");
+  require(lo.flood_barrier_closing >= 0 && lo.flood_barrier_closing <= 10,
+          "layout.flood_barrier_closing: must be in [0, 10]");
+  require(lo.enclosed_max_area_m2 >= 0, "layout.enclosed_max_area_m2: must be >= 0");
+  require(lo.passage_min_lines >= 0 && lo.passage_min_lines <= 4,
+          "layout.passage_min_lines: must be in [0, 4] (0: the paper's row and column passes)");
+  require(lo.seed_search_radius_m >= 0, "layout.seed_search_radius_m: must be >= 0");
+  require(lo.hanging_max_area_m2 >= 0, "layout.hanging_max_area_m2: must be >= 0");
+  require(lo.hanging_gap_m > 0, "layout.hanging_gap_m: must be > 0");
+  require(lo.hanging_max_extent_m >= 0, "layout.hanging_max_extent_m: must be >= 0");
+}
+
 LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::uint8_t>& furniture,
                           const GridGeometry& geo, const std::vector<Eigen::Vector2d>& scanners_map,
                           const LayoutParams& params, const Grid<std::uint8_t>* support) {
   if (walls_in.width != furniture.width || walls_in.height != furniture.height ||
       walls_in.width != geo.width() || walls_in.height != geo.height())
     throw Error("build_layout: wall map, furniture map and geometry differ in size");
+  validate(params);
   const int w = walls_in.width, h = walls_in.height;
   LayoutResult r;
   r.layout = Grid<Cell>(w, h, Cell::kUnknown);

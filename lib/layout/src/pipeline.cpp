@@ -27,6 +27,7 @@ MapResult make_map(PointCloud cloud, const MapParams& params) {
   cloud::validate(params.voxel);
   cloud::validate(params.ghosts);
   cloud::validate(params.layers);
+  validate(params.layout);  // every check before the heavy stages
   MapResult r;
   Stopwatch sw;
   r.level = cloud::estimate_level(cloud.points, params.level);

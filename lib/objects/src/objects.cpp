@@ -322,7 +322,7 @@ void add_pillars(const Grid<Cell>& layout, const GridGeometry& geo, const cloud:
 
     FurnitureObject o;
     o.id = static_cast<int>(res.objects.size()) + 1;
-    o.kind = "pillar";
+    o.kind = ObjectKind::kPillar;
     o.cells = static_cast<std::int64_t>(cells.size());
     o.start_cell = cells.front();
     o.min_cell = {x0, y0};
@@ -473,7 +473,7 @@ void add_lamps(const Grid<Cell>& layout, const GridGeometry& geo, const cloud::V
     if (std::max(bw, bh) * cell > params.lamp_max_extent_m) continue;
     FurnitureObject o;
     o.id = static_cast<int>(res.objects.size()) + 1;
-    o.kind = "lamp";
+    o.kind = ObjectKind::kLamp;
     o.cells = area;
     o.min_cell = {x0, y0};
     o.max_cell = {x0 + bw - 1, y0 + bh - 1};
@@ -525,6 +525,7 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
                               const cloud::VoxelGrid& voxels, const cloud::LayerAnalysis& layers,
                               const ObjectParams& params,
                               const std::vector<Eigen::Vector3d>& scanners_map) {
+  validate(params);
   const std::int64_t floor_layer = layers.floor_layer, ceiling_layer = layers.ceiling_layer;
   const int w = layout.width, h = layout.height;
   if (w != geo.width() || h != geo.height() || voxels.nx != w || voxels.ny != h)
@@ -674,7 +675,8 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
       o.has_height = true;
       o.on_floor = a.bottom <= floor_layer + 2;
       o.z_min_m = o.on_floor ? voxels.layer_center_m(floor_layer) : voxels.layer_bottom_m(a.bottom);
-      if (o.z_min_m - layers.floor_z_m >= params.hanging_min_clearance_m) o.kind = "hanging";
+      if (o.z_min_m - layers.floor_z_m >= params.hanging_min_clearance_m)
+        o.kind = ObjectKind::kHanging;
       // The top is a high percentile of the cells' tops, not their maximum: a strip of cells on
       // the wall face behind an object, or a mixed pixel, must not lift a cabinet to the ceiling.
       std::vector<std::int64_t> tops = a.tops;

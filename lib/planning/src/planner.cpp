@@ -224,10 +224,7 @@ void require(bool ok, const std::string& what) {
 
 }  // namespace
 
-void validate(const RobotParams& robot, const PlannerParams& p) {
-  require(std::isfinite(robot.width_m) && robot.width_m > 0, "robot.width_m: must be > 0");
-  require(std::isfinite(robot.length_m) && robot.length_m > 0, "robot.length_m: must be > 0");
-  require(std::isfinite(robot.extra_m) && robot.extra_m >= 0, "robot.extra_m: must be >= 0");
+void validate(const PlannerParams& p) {
   require(std::isfinite(p.d_max_m) && p.d_max_m > 0, "planner.d_max_m: must be > 0");
   require(std::isfinite(p.d_min_m) && p.d_min_m >= 0 && p.d_min_m <= p.d_max_m,
           "planner.d_min_m: must be in [0, planner.d_max_m]");
@@ -236,6 +233,11 @@ void validate(const RobotParams& robot, const PlannerParams& p) {
   require(p.max_routes >= 1 && p.max_routes <= 1000, "planner.max_routes: must be in [1, 1000]");
   require(p.extra_moves >= 0 && p.extra_moves <= 10, "planner.extra_moves: must be in [0, 10]");
   require(p.max_nodes >= 1, "planner.max_nodes: must be >= 1");
+}
+
+void validate(const RobotParams& robot, const PlannerParams& params) {
+  validate(robot);
+  validate(params);
 }
 
 Templates make_templates(const RobotParams& robot, const PlannerParams& params, double cell_m) {
@@ -455,12 +457,7 @@ CellIndex checked_cell(const Grid<SafeCell>& safe, const GridGeometry& geo, cons
 
 PlanResult plan_routes(const Grid<SafeCell>& safe, const GridGeometry& geometry, const Pose2& start,
                        const Pose2& goal, const Templates& templates, const PlannerParams& params) {
-  if (params.d_min_m < 0 || params.d_min_m > params.d_max_m || !(params.d_max_m > 0))
-    throw UsageError(
-        "invalid parameter planner.d_min_m / d_max_m: need 0 <= d_min_m <= d_max_m, d_max_m > 0");
-  require(params.paper_rules || params.exact_search,
-          "planner: paper_rules and exact_search cannot both be false");
-  require(params.max_routes >= 1, "planner.max_routes: must be >= 1");
+  validate(params);
   if (safe.width != geometry.width() || safe.height != geometry.height())
     throw UsageError("plan_routes: safe zone and geometry differ in size");
   const auto& t = templates.neighbourhood;

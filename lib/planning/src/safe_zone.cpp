@@ -2,10 +2,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "indoormap/core/errors.hpp"
 
 namespace indoormap::planning {
+
+void validate(const RobotParams& robot) {
+  auto require = [](bool ok, const std::string& what) {
+    if (!ok) throw UsageError("invalid parameter " + what);
+  };
+  require(std::isfinite(robot.width_m) && robot.width_m > 0, "robot.width_m: must be > 0");
+  require(std::isfinite(robot.length_m) && robot.length_m > 0, "robot.length_m: must be > 0");
+  require(std::isfinite(robot.extra_m) && robot.extra_m >= 0, "robot.extra_m: must be >= 0");
+}
 
 double d_save_m(const RobotParams& robot) {
   return std::max(robot.width_m / 2.0, robot.length_m / 2.0) + robot.extra_m;

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "indoormap/core/errors.hpp"
+#include "indoormap/core/object_kind.hpp"
 #include "indoormap/sim/output.hpp"
 
 namespace indoormap::sim {
@@ -118,6 +119,24 @@ ObjectScores evaluate_objects(const std::vector<EvalObject>& truth,
   if (n_bottom > 0) s.mean_abs_z_min_error_m = sum_bottom / n_bottom;
   if (n_top + n_bottom > 0) s.max_abs_height_error_m = worst;
   return s;
+}
+
+void validate(const EvalParams& params) {
+  if (!(params.min_object_iou > 0 && params.min_object_iou <= 1))
+    throw UsageError("invalid parameter min_object_iou: must be in (0, 1]");
+}
+
+ObjectScores evaluate_objects(const std::vector<EvalObject>& truth, std::vector<EvalObject> result,
+                              const EvalParams& params) {
+  validate(params);
+  std::vector<EvalObject> expected;
+  for (const auto& f : truth)
+    if (f.on_floor || params.include_hanging) expected.push_back(f);
+  // Without include_hanging both sides are what stands on the floor: result objects of kind
+  // "hanging" or "lamp" are left out as the truth's lamps are.
+  if (!params.include_hanging)
+    std::erase_if(result, [](const EvalObject& o) { return !o.on_floor; });
+  return evaluate_objects(expected, result, params.min_object_iou);
 }
 
 std::vector<RoomMatch> evaluate_rooms(const std::vector<TruthRoom>& truth,
@@ -294,8 +313,8 @@ std::vector<EvalObject> read_objects_json_unguarded(const fs::path& path) {
     e.type = o.value("type", o.value("label", ""));
     // furniture-extract's "hanging" and "lamp" objects do not claim to stand on the floor.
     if (o.contains("kind") && o["kind"].is_string()) {
-      const auto kind = o["kind"].get<std::string>();
-      e.on_floor = kind != "hanging" && kind != "lamp";
+      const auto kind = parse_object_kind(o["kind"].get<std::string>());
+      e.on_floor = !kind || stands_on_floor(*kind);
     }
     if (o.contains("footprint")) {
       e.footprint = polygon(o["footprint"], path, key + ".footprint");

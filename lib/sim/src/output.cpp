@@ -137,8 +137,14 @@ std::vector<std::string> write_3dtk(const fs::path& dir, const SimResult& sim) {
   return cloud_io::write_3dtk_scans(dir, scans);
 }
 
+void validate(const OutputOptions& options) {
+  if (!(options.truth_cell_m >= 0.001 && options.truth_cell_m <= 10))
+    throw UsageError("truth cell size must be in [0.001, 10] m");
+}
+
 WrittenOutputs write_scene_outputs(const fs::path& dir, const Scene& input, const SimResult& sim,
                                    const OutputOptions& options) {
+  validate(options);
   ensure_writable_dir(dir);
   const Scene scene = normalised(input);
   const SceneGeometry geometry = build_geometry(scene);

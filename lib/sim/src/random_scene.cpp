@@ -225,8 +225,12 @@ V2 rotate(const V2& p, double yaw) { return {std::cos(yaw) * p.x() - std::sin(ya
 
 }  // namespace
 
-Scene random_scene(std::uint64_t seed, const RandomSceneParams& p) {
+void validate(const RandomSceneParams& p) {
   if (p.rooms < 1 || p.rooms > 200) throw UsageError("--rooms must be in [1, 200]");
+}
+
+Scene random_scene(std::uint64_t seed, const RandomSceneParams& p) {
+  validate(p);
   Rng rng(seed ^ 0x5ce9e5ce9e5ce9eULL);
   Scene scene;
   scene.name = "random_" + std::to_string(seed);

@@ -36,14 +36,10 @@ std::string_view to_string(FurnitureType t) {
   return "invalid";
 }
 
-bool parse_furniture_type(std::string_view s, FurnitureType& out) {
-  for (const auto& tn : kTypeNames) {
-    if (tn.name == s) {
-      out = tn.type;
-      return true;
-    }
-  }
-  return false;
+std::optional<FurnitureType> parse_furniture_type(std::string_view s) {
+  for (const auto& tn : kTypeNames)
+    if (tn.name == s) return tn.type;
+  return std::nullopt;
 }
 
 double default_height_m(FurnitureType t) {

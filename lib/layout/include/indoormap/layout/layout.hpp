@@ -38,6 +38,10 @@ struct LayoutParams {
   double hanging_gap_m = 0.3;         ///< thickness of the support slice below the wall band
 };
 
+/// Checks ranges. Throws UsageError naming the key ("invalid parameter layout.<key>: ...").
+/// Called by build_layout and make_map.
+void validate(const LayoutParams& params);
+
 /// A wall-band object with free floor beneath it (a lamp), removed from the wall class.
 struct HangingObject {
   int min_col = 0, min_row = 0, max_col = 0, max_row = 0;  ///< bounding box, cells (inclusive)

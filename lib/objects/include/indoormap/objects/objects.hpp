@@ -10,6 +10,7 @@
 #include "indoormap/cloud/voxel.hpp"
 #include "indoormap/core/cell.hpp"
 #include "indoormap/core/grid.hpp"
+#include "indoormap/core/object_kind.hpp"
 #include "indoormap/objects/label.hpp"
 
 namespace indoormap::objects {
@@ -40,6 +41,10 @@ struct ObjectParams {
                                     ///< is not the table's top)
 };
 
+/// Checks ranges. Throws UsageError naming the key ("invalid parameter objects.<key>: ...").
+/// Called by extract_objects.
+void validate(const ObjectParams& params);
+
 /// A minimum-area rectangle; length_m runs along angle_deg (counter-clockwise from map +x,
 /// in [0, 180)), width_m across it.
 struct OrientedBox {
@@ -49,10 +54,10 @@ struct OrientedBox {
 
 struct FurnitureObject {
   int id = 0;  ///< 1.. in raster order of start_cell
-  /// "furniture" (stands on or near the floor), "hanging" (in the furniture band, 1 m or more
-  /// above the floor), "pillar" (a free-standing wall component) or "lamp" (above the furniture
-  /// band, below the ceiling).
-  std::string kind = "furniture";
+  /// furniture (stands on or near the floor), hanging (in the furniture band, 1 m or more above
+  /// the floor), pillar (a free-standing wall component) or lamp (above the furniture band, below
+  /// the ceiling); the apps add column / installation from the border analysis.
+  ObjectKind kind = ObjectKind::kFurniture;
   std::int64_t cells = 0;
   CellIndex start_cell;          ///< first cell in raster order (row 0 first)
   CellIndex min_cell, max_cell;  ///< bounding box in cells (inclusive)

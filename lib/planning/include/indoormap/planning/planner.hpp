@@ -135,11 +135,15 @@ class UnsafePointError : public Error {
 };
 
 /// Plans on a safe-zone layout. Throws OutsideMapError / UnsafePointError (naming which of
-/// "start" / "goal", and the distance to the nearest safe cell) and UsageError for bad params.
+/// "start" / "goal", and the distance to the nearest safe cell) and UsageError for bad params
+/// (validate) or templates that do not match them.
 PlanResult plan_routes(const Grid<SafeCell>& safe, const GridGeometry& geometry, const Pose2& start,
                        const Pose2& goal, const Templates& templates, const PlannerParams& params);
 
-/// Checks parameters (D_min <= D_max, template matches, ...). Throws UsageError naming the field.
+/// Checks ranges (0 <= D_min <= D_max, ...). Throws UsageError naming the key
+/// ("invalid parameter planner.<key>: ..."). Called by make_templates and plan_routes.
+void validate(const PlannerParams& params);
+/// validate(robot), then validate(params).
 void validate(const RobotParams& robot, const PlannerParams& params);
 
 /// Lexicographic minimum (moves, length) route by an exact search over the whole safe zone

@@ -17,6 +17,10 @@ struct RobotParams {
   double extra_m = 0.05;  ///< d_extra: deviation from the current point while turning on the spot
 };
 
+/// Checks that the sizes are finite and positive (extra_m >= 0). Throws UsageError naming the key
+/// ("invalid parameter robot.<key>: ..."). Called by make_templates.
+void validate(const RobotParams& robot);
+
 /// d_save = max(width/2, length/2) + extra (formula 1), metres.
 double d_save_m(const RobotParams& robot);
 

@@ -71,6 +71,21 @@ struct ObjectScores {
 ObjectScores evaluate_objects(const std::vector<EvalObject>& truth, const std::vector<EvalObject>& result,
                               double min_iou = 0.5);
 
+/// map-eval's parameters (config/map-eval.yaml).
+struct EvalParams {
+  double min_object_iou = 0.5;  ///< footprint IoU needed to match a result object with a truth item
+  bool include_hanging = false;  ///< also expect lamps (not standing on the floor) as objects
+};
+
+/// Throws UsageError unless min_object_iou is in (0, 1]. Called by evaluate_objects(..., params).
+void validate(const EvalParams& params);
+
+/// The object scores map-eval reports: without include_hanging both sides are what stands on the
+/// floor (truth items with on_floor, result objects not of kind hanging / lamp); matched with
+/// params.min_object_iou. Throws UsageError for invalid params (validate).
+ObjectScores evaluate_objects(const std::vector<EvalObject>& truth, std::vector<EvalObject> result,
+                              const EvalParams& params);
+
 // ---- Rooms -------------------------------------------------------------------------------------
 
 struct TruthRoom {

@@ -20,6 +20,9 @@ struct OutputOptions {
   std::string generator = "scene-sim";  ///< recorded in ground_truth.json
 };
 
+/// Throws UsageError unless truth_cell_m is in [0.001, 10] m. Called by write_scene_outputs.
+void validate(const OutputOptions& options);
+
 /// What write_scene_outputs wrote (file names relative to the output directory).
 struct WrittenOutputs {
   std::vector<std::string> files;

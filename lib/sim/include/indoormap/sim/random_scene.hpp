@@ -17,8 +17,11 @@ struct RandomSceneParams {
   bool scanner_in_corridor = true;  ///< also scan from the corridor when rooms >= 2
 };
 
+/// Throws UsageError for rooms outside [1, 200]. Called by random_scene.
+void validate(const RandomSceneParams& params);
+
 /// Builds a random scene; scene.seed is set to seed (it also drives the noise).
-/// Throws UsageError for rooms outside [1, 200].
+/// Throws UsageError for invalid params (validate).
 Scene random_scene(std::uint64_t seed, const RandomSceneParams& params = {});
 
 }  // namespace indoormap::sim

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -50,8 +51,8 @@ struct Room {
 enum class FurnitureType { kDesk, kTable, kCabinet, kShelf, kBox, kChair, kBin, kPillar, kLamp };
 
 std::string_view to_string(FurnitureType t);
-/// Parses "desk", "table", ...; false when unknown.
-bool parse_furniture_type(std::string_view s, FurnitureType& out);
+/// Parses "desk", "table", ...; nullopt when unknown.
+std::optional<FurnitureType> parse_furniture_type(std::string_view s);
 
 /// One furniture item. Box-shaped items (desk, table, cabinet, shelf, box, chair, lamp) use
 /// size_m along the item's own x / y axes, rotated by yaw_deg; round items (bin, pillar, and a
