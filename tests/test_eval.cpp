@@ -5,9 +5,13 @@
 #include <nlohmann/json.hpp>
 
 #include "indoormap/core/errors.hpp"
+#include "indoormap/formats/ground_truth_json.hpp"
+#include "indoormap/formats/json.hpp"
+#include "indoormap/formats/pgm.hpp"
+#include "indoormap/formats/ros_map.hpp"
 #include "indoormap/sim/eval.hpp"
-#include "indoormap/sim/output.hpp"
 #include "indoormap/sim/simulate.hpp"
+#include "indoormap/sim/world.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;
@@ -46,7 +50,13 @@ fs::path make_truth(const fs::path& dir) {
   s.scanners.push_back({{2.0, 1.5, 1.4}, 0});
   s.scanner.azimuth_step_deg = s.scanner.elevation_step_deg = 2;
   const SimResult sim = simulate(s);
-  write_scene_outputs(dir, s, sim);
+  // What scene-sim writes for map-eval: ground_truth.json and the layout image it names.
+  fs::create_directories(dir);
+  const Scene n = normalised(s);
+  const TruthLayout layout = truth_layout(n, build_geometry(n));
+  formats::write_layout_pgm(dir / formats::kTruthLayoutImage, layout.cells);
+  formats::write_json(dir / "ground_truth.json",
+                      formats::ground_truth_json(n, sim, layout, "scene-sim"));
   return dir / "ground_truth.json";
 }
 
@@ -167,8 +177,8 @@ TEST(MapEval, HandMadeResultFilesGiveKnownScores) {
   const fs::path res = dir / "result";
   fs::create_directories(res);
   // Layout: the truth itself (same grid) but with the cabinet's cells called free.
-  const TruthFile tf = read_truth_json(truth);
-  Grid<Cell> layout = read_layout_pgm(tf.layout_image, tf.layout_geometry);
+  const formats::TruthFile tf = formats::read_truth_json(truth);
+  Grid<Cell> layout = formats::read_layout_pgm(tf.layout_image, tf.layout_geometry);
   const Grid<Cell> truth_cells = layout;
   std::int64_t n_free = 0, n_cab = 0, n_desk = 0;
   for (int r = 0; r < layout.height; ++r) {
@@ -185,8 +195,9 @@ TEST(MapEval, HandMadeResultFilesGiveKnownScores) {
   }
   ASSERT_EQ(n_cab, 20 * 8);   // 1.0 x 0.4 m at 5 cm
   ASSERT_EQ(n_desk, 24 * 12);
-  write_layout_pgm(res / "layout.pgm", layout);
-  write_map_yaml(res / "map.yaml", "map.pgm", tf.layout_geometry);
+  formats::write_layout_pgm(res / "layout.pgm", layout);
+  formats::write_map_yaml(res / "map.yaml", formats::map_meta("map.pgm", tf.layout_geometry),
+                          formats::MapYamlStyle::kShortest);
   // Objects: the cabinet as an obb (length along 0 degrees), 10 cm too tall; a spurious box.
   test::write_text(res / "objects.json", R"({"objects": [
     {"id": 7, "obb": {"center": [1.0, 2.5], "width_m": 0.4, "length_m": 1.0, "angle_deg": 0}, "z_min_m": 0.0, "z_max_m": 1.3},
@@ -259,11 +270,13 @@ TEST(MapEval, BadInputsExitWith2AndNameTheFile) {
   fs::create_directories(res);
   // A ROS map.pgm (0 / 205 / 254) passed as layout.pgm.
   Grid<Cell> g(4, 4, Cell::kFree);
-  write_layout_pgm(res / "layout.pgm", g);
+  formats::write_layout_pgm(res / "layout.pgm", g);
   std::string bytes = test::read_text(res / "layout.pgm");
   bytes.back() = static_cast<char>(205);
   test::write_text(res / "layout.pgm", bytes);
-  write_map_yaml(res / "map.yaml", "map.pgm", GridGeometry({0, 0}, 0.05, 4, 4));
+  formats::write_map_yaml(res / "map.yaml",
+                          formats::map_meta("map.pgm", GridGeometry({0, 0}, 0.05, 4, 4)),
+                          formats::MapYamlStyle::kShortest);
   auto r = test::run_app("map-eval", "--truth " + truth.string() + " --result " + res.string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("layout.pgm"), std::string::npos) << r.err;

@@ -11,7 +11,7 @@
 #include <set>
 
 #include "indoormap/cloud_io/load.hpp"
-#include "indoormap/io/map_io.hpp"
+#include "indoormap/formats/ros_map.hpp"
 #include "indoormap/layout/pipeline.hpp"
 #include "indoormap/planning/planner.hpp"
 #include "plan_config.hpp"
@@ -445,10 +445,10 @@ TEST(PlanningRealData, JacobsRoomRoutes) {
 
 TEST(PlanningRealData, RoomSegmentationMapRoutes) {
   INDOORMAP_REQUIRE_DATA(dir, "room-segmentation-maps");
-  const auto f52 = io::read_plain_map(dir / "Freiburg52_scan.png", 0.05);
+  const auto f52 = formats::read_plain_map(dir / "Freiburg52_scan.png", 0.05);
   expect_routes(f52.cells, f52.geometry, {{{{5.0, 12.0}, 0.0}, {{20.0, 10.0}, {}}}},
                 "Freiburg52_scan");
-  const auto oa = io::read_plain_map(dir / "office_a.png", 0.05);
+  const auto oa = formats::read_plain_map(dir / "office_a.png", 0.05);
   expect_routes(oa.cells, oa.geometry, {{{{10.0, 20.0}, 0.0}, {{25.0, 25.0}, {}}}}, "office_a");
 }
 
@@ -463,7 +463,7 @@ TEST(PlanRoute, OutputsErrorsAndExitCodes) {
   for (int r = 0; r < 60; ++r) room.at(0, r) = room.at(119, r) = Cell::kWall;
   for (int r = 0; r < 60; ++r)
     if (r < 35 || r > 50) room.at(60, r) = Cell::kWall;
-  io::write_ros_map(dir, "map", room, GridGeometry({0, 0}, 0.05, 120, 60));
+  formats::write_ros_map(dir, "map", room, GridGeometry({0, 0}, 0.05, 120, 60));
   const std::string map = " --map " + (dir / "map.yaml").string();
   auto r =
       test::run_app("plan-route", map + " --start 1,1,0 --goal 5,1 -o " + (dir / "o").string());

@@ -8,7 +8,6 @@
 
 #include "indoormap/cloud_io/load.hpp"
 #include "indoormap/core/errors.hpp"
-#include "indoormap/io/map_io.hpp"
 #include "test_support.hpp"
 
 using namespace indoormap;
@@ -337,47 +336,8 @@ TEST(LoaderRefuses, PlyEmptyElementWithHugeCountIsSkippedNotLooped) {
   ASSERT_EQ(r.cloud.points.size(), 1u);
 }
 
-// ------------------------------------------------------------------------------ ROS map reader
-// (plan-route reads maps through it; its app rows join the table when it lands)
-
-struct MapCase {
-  std::string name;
-  std::string yaml;
-  std::string image;  ///< written as map.pgm ("<none>": not written)
-  std::string expect;
-  bool budget = false;  ///< BudgetError rather than InputError
-};
-
-void PrintTo(const MapCase& c, std::ostream* os) {
-  *os << c.name;
-}
-
-class RosMapRefuses : public ::testing::TestWithParam<MapCase> {};
-
-TEST_P(RosMapRefuses, WithTypedErrorNamingTheFile) {
-  const auto& c = GetParam();
-  const auto dir = test::scratch_dir();
-  if (c.yaml != "<none>") test::write_text(dir / "map.yaml", c.yaml);
-  if (c.image != "<none>") test::write_text(dir / "map.pgm", c.image);
-  try {
-    io::read_ros_map(dir / "map.yaml", 1'000'000);
-    FAIL() << "accepted";
-  } catch (const BudgetError& e) {
-    EXPECT_TRUE(c.budget) << e.what();
-    EXPECT_NE(std::string(e.what()).find(c.expect), std::string::npos) << e.what();
-    EXPECT_EQ(e.exit_code(), ExitCode::kBadInput);
-  } catch (const InputError& e) {
-    EXPECT_FALSE(c.budget) << e.what();
-    EXPECT_NE(std::string(e.what()).find(c.expect), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find(dir.string()), std::string::npos) << e.what();
-    EXPECT_EQ(e.exit_code(), ExitCode::kBadInput);
-  }
-}
-
+// Map files for the app rows (the ROS map reader's own rows are in test_formats.cpp).
 namespace {
-const std::string kYaml =
-    "image: map.pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\nnegate: 0\noccupied_thresh: 0.65\n"
-    "free_thresh: 0.196\n";
 const std::string kPgm = "P5\n2 2\n255\n" + std::string("\0\xfe\xcd\0", 4);
 std::string png_header(std::uint32_t w, std::uint32_t h) {
   std::string s("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16);
@@ -386,41 +346,6 @@ std::string png_header(std::uint32_t w, std::uint32_t h) {
   return s + std::string("\x08\0\0\0\0", 5) + std::string(8, '\0');
 }
 }  // namespace
-
-INSTANTIATE_TEST_SUITE_P(
-    Cases, RosMapRefuses,
-    ::testing::Values(
-        MapCase{"yaml_missing", "<none>", "<none>", "map.yaml: cannot open the map YAML"},
-        MapCase{"yaml_invalid", "image: [map.pgm\n", kPgm, "invalid YAML"},
-        MapCase{"yaml_not_mapping", "- 1\n", kPgm, "the map YAML is not a mapping"},
-        MapCase{"no_image_key", "resolution: 0.05\n", kPgm, "missing key 'image'"},
-        MapCase{"resolution_zero", replace_all(kYaml, "0.05", "0"), kPgm,
-                "key 'resolution' must be a positive number"},
-        MapCase{"resolution_text", replace_all(kYaml, "0.05", "fine"), kPgm,
-                "key 'resolution' is not a number"},
-        MapCase{"origin_two_values", replace_all(kYaml, "[0.0, 0.0, 0.0]", "[1, 2]"), kPgm,
-                "key 'origin' must be a list [x, y, yaw]"},
-        MapCase{"origin_infinite", replace_all(kYaml, "[0.0, 0.0, 0.0]", "[.inf, 0, 0]"), kPgm,
-                "key 'origin' is not finite"},
-        MapCase{"negate_not_0_or_1", replace_all(kYaml, "negate: 0", "negate: 1e300"), kPgm,
-                "key 'negate' must be 0 or 1"},
-        MapCase{"thresholds_out_of_range", replace_all(kYaml, "0.65", ".nan"), kPgm,
-                "keys 'free_thresh' <= 'occupied_thresh' must be numbers in [0, 1]"},
-        MapCase{"image_not_found", kYaml, "<none>", "map image not found (named by 'image' in"},
-        MapCase{"image_is_a_directory", replace_all(kYaml, "map.pgm", "."), kPgm,
-                "map image not found"},
-        MapCase{"image_not_pgm_or_png", kYaml, "GIF89a....",
-                "map image is neither PGM (P5/P2) nor PNG"},
-        MapCase{"pgm_header_malformed", kYaml, "P5\n2 x\n255\n", "malformed PGM header"},
-        MapCase{"pgm_truncated", kYaml, "P5\n100 100\n255\n" + std::string(99, '\0'),
-                "PGM of 100 x 100 pixels is truncated"},
-        MapCase{"pgm_huge_short", kYaml, "P5\n100000 100000\n255\n\0\0",
-                "PGM of 100000 x 100000 pixels is truncated"},
-        MapCase{"png_above_budget", kYaml, png_header(65536, 65536),
-                "map of 65536 x 65536 cells is above the budget of 1000000 cells", true},
-        MapCase{"png_zero_size", kYaml, png_header(0, 5), "map image has no pixels"},
-        MapCase{"png_corrupt", kYaml, png_header(4, 4), "cannot decode the map image"}),
-    [](const auto& info) { return info.param.name; });
 
 // ------------------------------------------------------------------------------ plan-route,
 // map-eval Rows found writing the plain_map, plan_config and layout_pgm fuzz targets: each app run

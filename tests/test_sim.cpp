@@ -10,6 +10,7 @@
 #include "indoormap/cloud_io/load.hpp"
 #include "indoormap/cloud_io/write.hpp"
 #include "indoormap/core/errors.hpp"
+#include "indoormap/formats/ground_truth_json.hpp"
 #include "indoormap/sim/eval.hpp"
 #include "indoormap/sim/ground_truth.hpp"
 #include "indoormap/sim/output.hpp"
@@ -392,21 +393,6 @@ TEST(SimTruth, LayoutMatchesTheScene) {
   EXPECT_NEAR(items[2].z_max_m, 2.5 - 0.5, 1e-12);
 }
 
-TEST(SimTruth, PgmRowsRunNorthUpAndReadBack) {
-  Grid<Cell> g(3, 2, Cell::kFree);
-  g.at(0, 0) = Cell::kWall;       // lowest y, lowest x
-  g.at(2, 1) = Cell::kFurniture;  // highest y, highest x
-  const fs::path dir = test::scratch_dir();
-  write_layout_pgm(dir / "l.pgm", g);
-  const std::string bytes = test::read_text(dir / "l.pgm");
-  ASSERT_EQ(bytes.substr(0, 11), "P5\n3 2\n255\n");
-  EXPECT_EQ(bytes[11 + 2], 2);      // image row 0 = highest y: last column is furniture
-  EXPECT_EQ(bytes[11 + 3 + 0], 1);  // image row 1 = lowest y: first column is wall
-  const Grid<std::uint8_t> back = read_pgm(dir / "l.pgm");
-  EXPECT_EQ(back.at(0, 0), 1);
-  EXPECT_EQ(back.at(2, 1), 2);
-}
-
 // ---- Files: PCD, 3DTK, the app -------------------------------------------------------------------------
 
 TEST(SimOutput, BinaryPcdHeaderAndData) {
@@ -453,7 +439,7 @@ TEST(SimOutput, OfficeSceneMatchesTheAcceptance) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto size = fs::file_size(dir / "cloud.pcd");
   EXPECT_LT(size, 10u * 1000 * 1000);
-  const TruthFile t = read_truth_json(dir / "ground_truth.json");
+  const formats::TruthFile t = formats::read_truth_json(dir / "ground_truth.json");
   ASSERT_EQ(t.rooms.size(), 2u);
   const auto [lo, hi] = bounds(t.rooms[0].polygon);
   EXPECT_NEAR(hi.x() - lo.x(), 8.5, 1e-9);

@@ -3,7 +3,7 @@
 // shared by furniture-extract and pcd-to-map.
 #include <Eigen/Core>
 #include <filesystem>
-#include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 #include "indoormap/border/border.hpp"
@@ -21,10 +21,8 @@ struct ObjectOutputs {
   double crop_margin_m = 0.05;
 };
 
-/// One object as JSON (map metres). The format is documented in docs/furniture-extract.md.
-nlohmann::json object_json(const objects::FurnitureObject& o);
-
-/// Writes the chosen outputs into out (atomically, each) and returns the list of files written.
+/// Writes the chosen outputs into out (atomically, each; objects.json and objects.csv by
+/// lib/formats, objects.png by lib/draw) and returns the list of files written.
 std::vector<std::string> write_object_outputs(const std::filesystem::path& out,
                                               const layout::MapResult& map,
                                               const objects::ObjectsResult& objects,

@@ -6,8 +6,10 @@
 
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
-#include "indoormap/io/map_io.hpp"
-#include "indoormap/io/render.hpp"
+#include "indoormap/draw/layout_png.hpp"
+#include "indoormap/formats/json.hpp"
+#include "indoormap/formats/pgm.hpp"
+#include "indoormap/formats/ros_map.hpp"
 #include "indoormap/version.hpp"
 
 namespace indoormap::app {
@@ -83,7 +85,7 @@ void finish_summary(json& summary, const fs::path& out, std::vector<std::string>
   summary["timings_ms"]["total"] = ms_since(start);
   outputs.push_back("summary.json");
   summary["outputs"] = outputs;
-  io::write_json(out / "summary.json", summary);
+  formats::write_json(out / "summary.json", summary);
 }
 
 PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_input_points) {
@@ -117,15 +119,15 @@ std::vector<std::string> write_map_outputs(const fs::path& out, const PipelineRu
   for (const auto& s : m.cloud_map.scanners) markers.emplace_back(s.x(), s.y());
   if (m.layout.seeds_estimated)
     for (const auto& s : m.layout.seeds) markers.push_back(m.geometry.center_of(s));
-  io::write_ros_map(out, "map", m.layout.layout, m.geometry);
-  io::write_layout_pgm(out / "layout.pgm", m.layout.layout);
-  io::RenderOptions ro;
+  formats::write_ros_map(out, "map", m.layout.layout, m.geometry);
+  formats::write_layout_pgm(out / "layout.pgm", m.layout.layout);
+  draw::RenderOptions ro;
   ro.title = "room layout M_r  (" + std::to_string(m.geometry.width()) + " x " +
              std::to_string(m.geometry.height()) + " cells of " +
              std::to_string(static_cast<int>(std::lround(m.geometry.cell_m() * 100))) + " cm)";
   ro.markers_map = markers;
   ro.marker_label = m.layout.seeds_estimated ? "scanner (estimated)" : "scanner";
-  io::write_layout_png(out / "layout.png", m.layout.layout, m.geometry, ro);
+  draw::write_layout_png(out / "layout.png", m.layout.layout, m.geometry, ro);
   return {"map.pgm", "map.yaml", "layout.pgm", "layout.png"};
 }
 

@@ -7,7 +7,6 @@
 #include "cli.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
-#include "indoormap/io/map_io.hpp"
 #include "objects_outputs.hpp"
 #include "pipeline_run.hpp"
 

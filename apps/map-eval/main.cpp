@@ -12,8 +12,12 @@
 #include "config_reader.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
+#include "indoormap/formats/ground_truth_json.hpp"
+#include "indoormap/formats/objects_json.hpp"
+#include "indoormap/formats/pgm.hpp"
+#include "indoormap/formats/room_geojson.hpp"
+#include "indoormap/formats/ros_map.hpp"
 #include "indoormap/sim/eval.hpp"
-#include "indoormap/sim/output.hpp"
 #include "indoormap/version.hpp"
 #include "main_guard.hpp"
 
@@ -45,7 +49,8 @@ double yaml_number(const YAML::Node& n, const fs::path& file, const std::string&
   throw InputError(file.string(), "key '" + key + "': expected a finite number", yaml_line(n));
 }
 
-/// Grid geometry of a result layout: layout.yaml if present, else map.yaml (same grid).
+/// Grid geometry of a result layout: layout.yaml if present, else map.yaml (same grid), read by
+/// the one map.yaml reader (formats::read_map_yaml; the image it names is not opened).
 GridGeometry result_geometry(const fs::path& dir, const Grid<std::uint8_t>& image,
                              std::string& source) {
   fs::path yaml = dir / "layout.yaml";
@@ -55,20 +60,11 @@ GridGeometry result_geometry(const fs::path& dir, const Grid<std::uint8_t>& imag
         (dir / "map.yaml").string(),
         "missing: layout.pgm needs map.yaml (or layout.yaml) for its resolution and origin");
   source = yaml.filename().string();
-  const YAML::Node root = app::load_yaml_file(yaml.string());
-  if (!root.IsMap()) throw InputError(yaml.string(), "expected a ROS map YAML mapping");
-  const double res = yaml_number(root["resolution"], yaml, "resolution");
-  if (!(res > 0))
-    throw InputError(yaml.string(), "key 'resolution': must be positive",
-                     yaml_line(root["resolution"]));
-  const YAML::Node o = root["origin"];
-  if (!o.IsSequence() || o.size() < 2)
-    throw InputError(yaml.string(), "key 'origin': expected [x, y, yaw]", yaml_line(o));
-  const double ox = yaml_number(o[0], yaml, "origin[0]"), oy = yaml_number(o[1], yaml, "origin[1]");
-  if (o.size() >= 3 && yaml_number(o[2], yaml, "origin[2]") != 0.0)
-    throw InputError(yaml.string(), "key 'origin': a rotated map (yaw != 0) is not supported",
-                     yaml_line(o));
-  return GridGeometry({ox, oy}, res, image.width, image.height);
+  const formats::RosMapMeta meta = formats::read_map_yaml(yaml);
+  if (meta.origin.z() != 0.0)
+    throw InputError(yaml.string(), "key 'origin': a rotated map (yaw != 0) is not supported");
+  return GridGeometry({meta.origin.x(), meta.origin.y()}, meta.resolution_m, image.width,
+                      image.height);
 }
 
 ordered_json opt(const std::optional<double>& v) {
@@ -196,7 +192,7 @@ int run(int argc, char** argv) {
   if (out_dir.empty()) out_dir = result_dir;
   ensure_writable_dir(out_dir);
 
-  const sim::TruthFile truth = sim::read_truth_json(truth_file);
+  const formats::TruthFile truth = formats::read_truth_json(truth_file);
   const fs::path dir(result_dir);
   ordered_json report;
   report["app"] = "map-eval";
@@ -210,11 +206,12 @@ int run(int argc, char** argv) {
 
   // Layout.
   if (fs::exists(dir / "layout.pgm")) {
-    const Grid<std::uint8_t> raw = sim::read_pgm(dir / "layout.pgm");
+    const Grid<std::uint8_t> raw = formats::read_pgm(dir / "layout.pgm");
     std::string source;
     const GridGeometry rg = result_geometry(dir, raw, source);
-    const Grid<Cell> result = sim::read_layout_pgm(dir / "layout.pgm", rg);
-    const Grid<Cell> truth_cells = sim::read_layout_pgm(truth.layout_image, truth.layout_geometry);
+    const Grid<Cell> result = formats::read_layout_pgm(dir / "layout.pgm", rg);
+    const Grid<Cell> truth_cells =
+        formats::read_layout_pgm(truth.layout_image, truth.layout_geometry);
     ordered_json j = {{"status", "ok"}, {"file", "layout.pgm"}, {"geometry_from", source}};
     j.update(layout_json(sim::evaluate_layout(truth.layout_geometry, truth_cells, rg, result)));
     report["layout"] = j;
@@ -226,7 +223,7 @@ int run(int argc, char** argv) {
   // Objects.
   if (fs::exists(dir / "objects.json")) {
     // Without --include-hanging both sides are what stands on the floor (sim::evaluate_objects).
-    const auto objects = sim::read_objects_json(dir / "objects.json");
+    const auto objects = formats::read_objects_json(dir / "objects.json");
     ordered_json j = {{"status", "ok"}, {"file", "objects.json"}};
     j.update(objects_json(sim::evaluate_objects(truth.furniture, objects, p)));
     report["objects"] = j;
@@ -237,7 +234,7 @@ int run(int argc, char** argv) {
   }
   // Room polygons.
   if (fs::exists(dir / "room.geojson")) {
-    const auto rooms = sim::read_room_geojson(dir / "room.geojson");
+    const auto rooms = formats::read_room_geojson(dir / "room.geojson");
     ordered_json j = {{"status", rooms.empty() ? "empty" : "ok"}, {"file", "room.geojson"}};
     j["rooms"] = rooms_json(sim::evaluate_rooms(truth.rooms, rooms));
     report["room"] = j;

@@ -11,11 +11,11 @@ namespace indoormap::app {
 
 /// Writes the room border r of m (closed by border::close_border in closure_ms), atomically, into
 /// out:
-///  - room.geojson: a FeatureCollection in map metres: the room Polygon (kind "room", area_m2,
-///    perimeter_m; counter-clockwise, closed ring), one LineString per opening (kind "opening",
-///    width_m, door_candidate) and the interior objects' boxes (kind "interior_object");
-///  - room.json: the raw chain (cells and metres), polygon, openings, components;
-///  - border.png: the layout with the chain, the polygon and the openings drawn, with a legend.
+///  - room.geojson (formats::write_room_geojson): a FeatureCollection in map metres;
+///  - room.json (formats::room_json): the raw chain (cells and metres), polygon, openings,
+///    components;
+///  - border.png (draw::write_border_png): the layout with the chain, the polygon and the
+///    openings drawn, with a legend.
 /// No closed border is an expected outcome: the files are still written (without the room
 /// feature), a warning goes to stderr, and the returned block says closed = false with the
 /// reason. Returns the block for summary.json, whose "outputs" lists the files written.

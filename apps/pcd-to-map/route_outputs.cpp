@@ -2,8 +2,8 @@
 
 #include <chrono>
 
-#include "indoormap/io/route_io.hpp"
 #include "indoormap/planning/planner.hpp"
+#include "route_files.hpp"
 
 namespace indoormap::app {
 
@@ -22,8 +22,8 @@ std::optional<RouteOutputs> write_route_outputs(const std::filesystem::path& out
   const auto result = planning::plan_routes(safe, geometry, start, goal, templates, pc.planner);
   const double plan_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  const io::RouteReport rep{&safe, geometry, start, goal, pc.robot, pc.planner, &result};
-  const auto files = io::write_route_outputs(out, rep);
+  const formats::RouteReport rep{&safe, geometry, start, goal, pc.robot, pc.planner, &result};
+  const auto files = write_route_files(out, rep);
   RouteOutputs r;
   r.found = !result.routes.empty();
   r.message = result.message;

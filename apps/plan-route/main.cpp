@@ -7,10 +7,11 @@
 #include "cli.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
-#include "indoormap/io/map_io.hpp"
-#include "indoormap/io/route_io.hpp"
+#include "indoormap/formats/json.hpp"
+#include "indoormap/formats/ros_map.hpp"
 #include "indoormap/version.hpp"
 #include "plan_config.hpp"
+#include "route_files.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
@@ -82,16 +83,16 @@ int run(int argc, char** argv) {
   auto t0 = std::chrono::steady_clock::now();
   const fs::path mp = map_path;
   const std::string ext = mp.extension().string();
-  io::RosMap map;
+  formats::RosMap map;
   if (ext == ".yaml" || ext == ".yml") {
     if (resolution != 0.0)
       throw UsageError("--resolution is for plain PNG/PGM maps; " + map_path + " is a map YAML");
-    map = io::read_ros_map(mp);
+    map = formats::read_ros_map(mp);
   } else {
     if (!(resolution > 0))
       throw UsageError("--map " + map_path +
                        " is an image: give its --resolution in metres per pixel");
-    map = io::read_plain_map(mp, resolution, free_min);
+    map = formats::read_plain_map(mp, resolution, free_min);
   }
   const double load_ms = ms_since(t0);
 
@@ -108,8 +109,8 @@ int run(int argc, char** argv) {
   const double plan_ms = ms_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  io::RouteReport rep{&safe, map.geometry, start, goal, cfg.robot, cfg.planner, &result};
-  auto files = io::write_route_outputs(out, rep);
+  formats::RouteReport rep{&safe, map.geometry, start, goal, cfg.robot, cfg.planner, &result};
+  auto files = app::write_route_files(out, rep);
   const double write_ms = ms_since(t0);
   files.push_back("summary.json");
   json summary = {
@@ -139,7 +140,7 @@ int run(int argc, char** argv) {
         {"total", ms_since(t_start)}}},
       {"outputs", files},
   };
-  io::write_json(out / "summary.json", summary);
+  formats::write_json(out / "summary.json", summary);
   if (result.routes.empty()) {
     std::cerr << "plan-route: " << result.message << "\n";
     return static_cast<int>(ExitCode::kNoResult);

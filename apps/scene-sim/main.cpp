@@ -9,11 +9,11 @@
 
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
-#include "indoormap/sim/output.hpp"
 #include "indoormap/sim/random_scene.hpp"
 #include "indoormap/sim/simulate.hpp"
 #include "indoormap/version.hpp"
 #include "main_guard.hpp"
+#include "scene_outputs.hpp"
 #include "scene_yaml.hpp"
 
 namespace fs = std::filesystem;
@@ -134,7 +134,7 @@ int run(int argc, char** argv) {
     return static_cast<int>(ExitCode::kNoResult);
   }
   sim::OutputOptions out_options = config.output;
-  const auto written = sim::write_scene_outputs(out_dir, scene, result, out_options);
+  const auto written = scene_sim::write_scene_outputs(out_dir, scene, result, out_options);
   const auto t2 = std::chrono::steady_clock::now();
 
   const double sim_s = std::chrono::duration<double>(t1 - t0).count();

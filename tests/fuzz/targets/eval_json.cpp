@@ -2,7 +2,9 @@
 // all three readers.
 #include "fuzz_target.hpp"
 #include "indoormap/core/errors.hpp"
-#include "indoormap/sim/eval.hpp"
+#include "indoormap/formats/ground_truth_json.hpp"
+#include "indoormap/formats/objects_json.hpp"
+#include "indoormap/formats/room_geojson.hpp"
 
 INDOORMAP_FUZZ_TARGET(eval_json) {
   using namespace indoormap::fuzz;
@@ -10,12 +12,12 @@ INDOORMAP_FUZZ_TARGET(eval_json) {
   const auto file = write_file(dir, "input.json", bytes);
   // Each reader either accepts the file or throws indoormap::Error; try all three.
   try {
-    (void)indoormap::sim::read_truth_json(file);
+    (void)indoormap::formats::read_truth_json(file);
   } catch (const indoormap::Error&) {
   }
   try {
-    (void)indoormap::sim::read_objects_json(file);
+    (void)indoormap::formats::read_objects_json(file);
   } catch (const indoormap::Error&) {
   }
-  (void)indoormap::sim::read_room_geojson(file);
+  (void)indoormap::formats::read_room_geojson(file);
 }

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "fuzz_target.hpp"
-#include "indoormap/io/map_io.hpp"
+#include "indoormap/formats/ros_map.hpp"
 
 INDOORMAP_FUZZ_TARGET(plain_map) {
   using namespace indoormap::fuzz;
@@ -20,8 +20,8 @@ INDOORMAP_FUZZ_TARGET(plain_map) {
   const auto image = bytes.substr(std::min<std::size_t>(bytes.size(), 2));
   const auto path = write_file(fresh_dir(), kNames[select & 3u], image);
   const double resolution = kResolutions[(select >> 2) & 7u];
-  const indoormap::io::RosMap m =
-      indoormap::io::read_plain_map(path, resolution, free_min, kMaxCells);
+  const indoormap::formats::RosMap m =
+      indoormap::formats::read_plain_map(path, resolution, free_min, kMaxCells);
   if (m.cells.width != m.geometry.width() || m.cells.height != m.geometry.height() ||
       m.cells.size() == 0 || static_cast<std::int64_t>(m.cells.size()) > kMaxCells ||
       m.geometry.cell_m() != resolution)

@@ -1,10 +1,10 @@
 #pragma once
 // Evaluation of pcd-to-map / furniture-extract results against a scene's ground truth
 // (docs/evaluation.md): per-class IoU of the layout, object recall / precision with height
-// errors, room-polygon Hausdorff distance and area error.
+// errors, room-polygon Hausdorff distance and area error. Values in, values out: the files are
+// read by lib/formats (ground_truth_json.hpp, objects_json.hpp, room_geojson.hpp, pgm.hpp).
 #include <array>
 #include <cstdint>
-#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -108,25 +108,5 @@ struct RoomMatch {
 /// Each result polygon is matched with the truth room it overlaps most (IoU, 2 cm raster); the
 /// Hausdorff distance is between the boundaries sampled every 1 cm.
 std::vector<RoomMatch> evaluate_rooms(const std::vector<TruthRoom>& truth, const std::vector<Polygon>& result);
-
-// ---- Files -------------------------------------------------------------------------------------
-
-struct TruthFile {
-  std::filesystem::path path;
-  std::vector<TruthRoom> rooms;
-  std::vector<EvalObject> furniture;
-  std::filesystem::path layout_image;  ///< resolved against the JSON's directory
-  GridGeometry layout_geometry;
-};
-
-/// Reads ground_truth.json (as written by scene-sim). Throws InputError naming the file and key.
-TruthFile read_truth_json(const std::filesystem::path& path);
-/// Reads the truth layout image referenced by the truth file (values must be 0..3).
-Grid<Cell> read_layout_pgm(const std::filesystem::path& path, const GridGeometry& expected);
-/// objects.json: {"objects": [{id, footprint [[x,y],...] | obb {center, width_m, length_m,
-/// angle_deg}, z_min_m, z_max_m}]}. length_m runs along angle_deg (counter-clockwise from +x).
-std::vector<EvalObject> read_objects_json(const std::filesystem::path& path);
-/// room.geojson: the Polygon features whose property "kind" is "room" (outer rings).
-std::vector<Polygon> read_room_geojson(const std::filesystem::path& path);
 
 }  // namespace indoormap::sim

@@ -1,20 +1,23 @@
 #pragma once
-// ROS map_server files (map.pgm + map.yaml) and raw class images. Images are written north up:
-// image row 0 holds grid row height-1 (the highest y), as map_server expects.
+// ROS map_server files (map.pgm + map.yaml), writer and reader side by side, and the reader of
+// plain building-map images. Images are written north up: image row 0 holds grid row height-1
+// (the highest y), as map_server expects.
+#include <Eigen/Core>
+#include <cstdint>
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <string>
 
 #include "indoormap/core/cell.hpp"
 #include "indoormap/core/grid.hpp"
 
-namespace indoormap::io {
+namespace indoormap::formats {
 
 /// Grey values of the ROS trinary map (negate 0): occupied black, free white, unknown grey.
 inline constexpr std::uint8_t kRosOccupied = 0;
 inline constexpr std::uint8_t kRosFree = 254;
 inline constexpr std::uint8_t kRosUnknown = 205;
 
+/// The keys of a map_server YAML.
 struct RosMapMeta {
   std::string image = "map.pgm";
   double resolution_m = 0.05;
@@ -24,13 +27,28 @@ struct RosMapMeta {
   double free_thresh = 0.196;
 };
 
+/// How write_map_yaml spells the file. Both read back the same; each app keeps the bytes it has
+/// always written:
+///  - kRosMap: a "mode: trinary" line, numbers with 10 significant digits (pcd-to-map's map.yaml,
+///    plan-route's safe.yaml; origin 0 is written "0");
+///  - kShortest: no mode line, numbers in the shortest text that reads back as the same double,
+///    always with a decimal point (scene-sim's ground_truth_layout.yaml; origin 0 is "0.0").
+enum class MapYamlStyle { kRosMap, kShortest };
+
+/// Writes a map_server YAML (image, [mode,] resolution, origin with yaw 0, negate, thresholds)
+/// atomically. The yaw of meta.origin is not written: it is always 0.0.
+void write_map_yaml(const std::filesystem::path& path, const RosMapMeta& meta,
+                    MapYamlStyle style = MapYamlStyle::kRosMap);
+/// The meta of a grid: image name, the geometry's resolution and origin, default thresholds.
+RosMapMeta map_meta(const std::string& image, const GridGeometry& geometry);
+
 /// Writes <dir>/<stem>.pgm and <dir>/<stem>.yaml: occupied = wall or furniture, free, unknown.
 void write_ros_map(const std::filesystem::path& dir, const std::string& stem,
                    const Grid<Cell>& layout, const GridGeometry& geometry);
 
-/// Writes a P5 PGM of the raw values (north up).
-void write_pgm(const std::filesystem::path& path, const Grid<std::uint8_t>& grid);
-void write_layout_pgm(const std::filesystem::path& path, const Grid<Cell>& layout);
+/// Reads the keys of a map_server YAML (the image is not opened). Throws InputError naming the
+/// file and the key on malformed input.
+RosMapMeta read_map_yaml(const std::filesystem::path& yaml_path);
 
 /// A ROS map as map_server reads it: occupancy from the grey levels and the YAML thresholds.
 struct RosMap {
@@ -48,7 +66,4 @@ RosMap read_ros_map(const std::filesystem::path& yaml_path, std::int64_t max_cel
 RosMap read_plain_map(const std::filesystem::path& image, double resolution_m, int free_min = 250,
                       std::int64_t max_cells = 100'000'000);
 
-/// Writes JSON (2-space indent) atomically.
-void write_json(const std::filesystem::path& path, const nlohmann::json& j);
-
-}  // namespace indoormap::io
+}  // namespace indoormap::formats

@@ -1,38 +1,64 @@
-#include "indoormap/io/map_io.hpp"
+#include "indoormap/formats/ros_map.hpp"
 
 #include <yaml-cpp/yaml.h>
 
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <limits>
 #include <opencv2/imgcodecs.hpp>
+#include <optional>
 #include <sstream>
 
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
+#include "indoormap/formats/pgm.hpp"
 
-namespace indoormap::io {
+namespace indoormap::formats {
 
 namespace fs = std::filesystem;
 
-void write_pgm(const fs::path& path, const Grid<std::uint8_t>& grid) {
-  std::string bytes =
-      "P5\n" + std::to_string(grid.width) + " " + std::to_string(grid.height) + "\n255\n";
-  const std::size_t header = bytes.size();
-  bytes.resize(header + grid.size());
-  for (int r = 0; r < grid.height; ++r) {
-    const std::size_t dst = header + static_cast<std::size_t>(grid.height - 1 - r) * grid.width;
-    std::copy_n(grid.data.begin() + static_cast<std::ptrdiff_t>(r) * grid.width, grid.width,
-                bytes.begin() + static_cast<std::ptrdiff_t>(dst));
-  }
-  write_file_atomic(path, bytes);
+namespace {
+
+/// Shortest text that reads back as the same double.
+std::string shortest(double v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  std::string s(buf, r.ptr);
+  if (s.find_first_of(".eE") == std::string::npos && s.find("inf") == std::string::npos) s += ".0";
+  return s;
 }
 
-void write_layout_pgm(const fs::path& path, const Grid<Cell>& layout) {
-  Grid<std::uint8_t> raw(layout.width, layout.height);
-  for (std::size_t i = 0; i < raw.size(); ++i)
-    raw.data[i] = static_cast<std::uint8_t>(layout.data[i]);
-  write_pgm(path, raw);
+}  // namespace
+
+RosMapMeta map_meta(const std::string& image, const GridGeometry& geometry) {
+  RosMapMeta meta;
+  meta.image = image;
+  meta.resolution_m = geometry.cell_m();
+  meta.origin = {geometry.origin_m().x(), geometry.origin_m().y(), 0.0};
+  return meta;
+}
+
+void write_map_yaml(const fs::path& path, const RosMapMeta& meta, MapYamlStyle style) {
+  std::ostringstream y;
+  if (style == MapYamlStyle::kRosMap) {
+    y.precision(10);
+    y << "image: " << meta.image << "\n"
+      << "mode: trinary\n"
+      << "resolution: " << meta.resolution_m << "\n"
+      << "origin: [" << meta.origin.x() << ", " << meta.origin.y() << ", 0.0]\n"
+      << "negate: " << meta.negate << "\n"
+      << "occupied_thresh: " << meta.occupied_thresh << "\n"
+      << "free_thresh: " << meta.free_thresh << "\n";
+  } else {
+    y << "image: " << meta.image << "\n"
+      << "resolution: " << shortest(meta.resolution_m) << "\n"
+      << "origin: [" << shortest(meta.origin.x()) << ", " << shortest(meta.origin.y()) << ", 0.0]\n"
+      << "negate: " << meta.negate << "\n"
+      << "occupied_thresh: " << shortest(meta.occupied_thresh) << "\n"
+      << "free_thresh: " << shortest(meta.free_thresh) << "\n";
+  }
+  write_file_atomic(path, y.str());
 }
 
 void write_ros_map(const fs::path& dir, const std::string& stem, const Grid<Cell>& layout,
@@ -52,22 +78,8 @@ void write_ros_map(const fs::path& dir, const std::string& stem, const Grid<Cell
         break;
     }
   }
-  const RosMapMeta meta;
-  std::ostringstream y;
-  y.precision(10);
-  y << "image: " << stem << ".pgm\n"
-    << "mode: trinary\n"
-    << "resolution: " << geo.cell_m() << "\n"
-    << "origin: [" << geo.origin_m().x() << ", " << geo.origin_m().y() << ", 0.0]\n"
-    << "negate: " << meta.negate << "\n"
-    << "occupied_thresh: " << meta.occupied_thresh << "\n"
-    << "free_thresh: " << meta.free_thresh << "\n";
   write_pgm(dir / (stem + ".pgm"), img);
-  write_file_atomic(dir / (stem + ".yaml"), y.str());
-}
-
-void write_json(const fs::path& path, const nlohmann::json& j) {
-  write_file_atomic(path, j.dump(2) + "\n");
+  write_map_yaml(dir / (stem + ".yaml"), map_meta(stem + ".pgm", geo), MapYamlStyle::kRosMap);
 }
 
 namespace {
@@ -167,7 +179,7 @@ cv::Mat decode_gray(const fs::path& image, std::int64_t max_cells) {
 
 }  // namespace
 
-RosMap read_ros_map(const fs::path& yaml_path, std::int64_t max_cells) {
+RosMapMeta read_map_yaml(const fs::path& yaml_path) {
   YAML::Node root;
   try {
     std::ifstream in(yaml_path);
@@ -178,7 +190,7 @@ RosMap read_ros_map(const fs::path& yaml_path, std::int64_t max_cells) {
                      static_cast<std::size_t>(e.mark.line + 1));
   }
   if (!root.IsMap()) throw InputError(yaml_path.string(), "the map YAML is not a mapping");
-  RosMap m;
+  RosMap m;  // the keys go to m.meta
   if (!root["image"] || !root["image"].IsScalar())
     throw InputError(yaml_path.string(), "missing key 'image'");
   m.meta.image = root["image"].as<std::string>();
@@ -208,6 +220,12 @@ RosMap read_ros_map(const fs::path& yaml_path, std::int64_t max_cells) {
     throw InputError(yaml_path.string(),
                      "keys 'free_thresh' <= 'occupied_thresh' must be numbers in [0, 1]");
 
+  return m.meta;
+}
+
+RosMap read_ros_map(const fs::path& yaml_path, std::int64_t max_cells) {
+  RosMap m;
+  m.meta = read_map_yaml(yaml_path);
   fs::path image = m.meta.image;
   if (image.is_relative()) image = yaml_path.parent_path() / image;
   std::error_code ec;
@@ -255,4 +273,4 @@ RosMap read_plain_map(const fs::path& image, double resolution_m, int free_min,
   return m;
 }
 
-}  // namespace indoormap::io
+}  // namespace indoormap::formats

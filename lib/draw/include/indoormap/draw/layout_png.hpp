@@ -1,17 +1,18 @@
 #pragma once
-// PNG pictures of layouts, with a legend, a scale bar and markers.
+// PNG pictures of layouts (layout.png, objects.png, ground_truth_layout.png), with a legend, a
+// scale bar and markers.
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
-#include <utility>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "indoormap/core/cell.hpp"
 #include "indoormap/core/grid.hpp"
 
-namespace indoormap::io {
+namespace indoormap::draw {
 
 /// A polyline or polygon drawn over the layout, with an optional text label at its centre.
 struct Overlay {
@@ -24,7 +25,7 @@ struct Overlay {
 
 struct RenderOptions {
   std::string title;
-  int min_width_px = 640;   ///< cells are scaled up by an integer factor to reach this width
+  int min_width_px = 640;  ///< cells are scaled up by an integer factor to reach this width
   std::vector<Eigen::Vector2d> markers_map;  ///< scanner positions etc. (map metres), red crosses
   std::string marker_label = "scanner";
   std::vector<Overlay> overlays;
@@ -32,9 +33,15 @@ struct RenderOptions {
   std::vector<std::pair<std::string, std::array<std::uint8_t, 3>>> legend;
 };
 
-/// Renders the layout in colour (unknown grey, wall dark blue, furniture orange, free white),
-/// north up, with a legend and a 1 m scale bar, and writes it as PNG atomically.
+/// Renders the layout in colour (CellColours::kMap), north up, with a legend and a 1 m scale
+/// bar, and writes it as PNG atomically.
 void write_layout_png(const std::filesystem::path& path, const Grid<Cell>& layout,
                       const GridGeometry& geometry, const RenderOptions& options = {});
 
-}  // namespace indoormap::io
+/// scene-sim's picture of the true layout (CellColours::kTruth, up to 8 px per cell, about 900
+/// px wide), the scanner positions as red dots, a legend of the classes; north up.
+void write_truth_layout_png(const std::filesystem::path& path, const Grid<Cell>& cells,
+                            const GridGeometry& geometry,
+                            const std::vector<Eigen::Vector2d>& markers_m = {});
+
+}  // namespace indoormap::draw

@@ -1,13 +1,14 @@
 #pragma once
-// Outputs of the route planner (docs/plan-route.md): route.json, route.png, safe.pgm + safe.yaml.
+// Outputs of the route planner (docs/plan-route.md): route.json and the safe zone as a ROS map
+// (safe.pgm + safe.yaml). route.png is drawn by indoormap/draw/route_png.hpp from the same
+// report. Users of this header link im_planning for the value types.
 #include <filesystem>
 #include <nlohmann/json.hpp>
-#include <string>
-#include <vector>
 
+#include "indoormap/core/grid.hpp"
 #include "indoormap/planning/planner.hpp"
 
-namespace indoormap::io {
+namespace indoormap::formats {
 
 /// Everything a route report shows.
 struct RouteReport {
@@ -22,19 +23,11 @@ struct RouteReport {
 /// route.json: the ranked routes (commands, waypoints in map metres, moves, turns, length) and
 /// the parameters used (robot size, d_save_m, d_min_m, d_max_m).
 nlohmann::json route_json(const RouteReport& report);
-
-/// route.png: safe zone, trajectory region, the best route with numbered turns (and the other
-/// routes thin), start and goal, a legend and a 1 m scale bar; north up.
-void write_route_png(const std::filesystem::path& path, const RouteReport& report);
+void write_route_json(const std::filesystem::path& path, const RouteReport& report);
 
 /// The safe zone as a ROS map: safe cells free (254), unsafe and obstacles occupied (0), outside
 /// unknown (205); safe.pgm + safe.yaml with the input map's geometry.
 void write_safe_map(const std::filesystem::path& dir, const Grid<planning::SafeCell>& safe,
                     const GridGeometry& geometry);
 
-/// Writes route.json, route.png, safe.pgm and safe.yaml into dir (each atomically); returns the
-/// file names written.
-std::vector<std::string> write_route_outputs(const std::filesystem::path& dir,
-                                             const RouteReport& report);
-
-}  // namespace indoormap::io
+}  // namespace indoormap::formats
