@@ -11,7 +11,7 @@ then compares every file the two runs wrote:
     data does not).
 Numbers in JSON are compared exactly unless --rel-tol is given.
 
-Usage: scripts/compare_outputs.py OLD_BIN NEW_BIN [--work DIR] [--rel-tol X]
+Usage: scripts/compare_outputs.py OLD_BIN NEW_BIN [--work DIR] [--rel-tol X] [--new-params-ok]
 Exit 0 when every output matches, 1 otherwise (each difference printed).
 """
 import argparse
@@ -97,6 +97,23 @@ def scrub(v, work):
     return v
 
 
+def drop_new_parameters(a, b):
+    """Removes from b's "parameters" the keys a does not have (new parameters whose defaults keep
+    the old behaviour; listed, not hidden)."""
+    added = []
+    def walk(x, y, path):
+        if isinstance(x, dict) and isinstance(y, dict):
+            for k in list(y):
+                if k not in x:
+                    added.append(path + k)
+                    del y[k]
+                else:
+                    walk(x[k], y[k], path + k + ".")
+    if isinstance(a, dict) and isinstance(b, dict) and "parameters" in a and "parameters" in b:
+        walk(a["parameters"], b["parameters"], "parameters.")
+    return added
+
+
 def same(a, b, rel_tol):
     if isinstance(a, float) and isinstance(b, (int, float)) or isinstance(b, float) and isinstance(a, int):
         return a == b or abs(a - b) <= rel_tol * max(abs(a), abs(b))
@@ -107,8 +124,8 @@ def same(a, b, rel_tol):
     return a == b
 
 
-def compare(old, new, rel_tol):
-    problems, pictures = [], []
+def compare(old, new, rel_tol, new_params_ok):
+    problems, pictures, added = [], [], set()
     files = sorted({p.relative_to(old) for p in old.rglob("*") if p.is_file()} |
                    {p.relative_to(new) for p in new.rglob("*") if p.is_file()})
     for rel in files:
@@ -122,6 +139,8 @@ def compare(old, new, rel_tol):
             except json.JSONDecodeError as e:
                 problems.append(f"{rel}: not JSON ({e})")
                 continue
+            for k in drop_new_parameters(ja, jb) if new_params_ok else []:
+                added.add(k)
             if not same(ja, jb, rel_tol):
                 problems.append(f"{rel}: JSON differs")
         elif rel.name.startswith("stderr_"):
@@ -129,7 +148,7 @@ def compare(old, new, rel_tol):
                 problems.append(f"{rel}: messages differ")
         elif a.read_bytes() != b.read_bytes():
             (pictures if rel.suffix == ".png" else problems).append(f"{rel}: bytes differ")
-    return files, problems, pictures
+    return files, problems, pictures, sorted(added)
 
 
 def main():
@@ -138,6 +157,8 @@ def main():
     ap.add_argument("new_bin", type=Path)
     ap.add_argument("--work", type=Path, default=Path("/tmp/indoormap-compare"))
     ap.add_argument("--rel-tol", type=float, default=0.0)
+    ap.add_argument("--new-params-ok", action="store_true",
+                    help="accept parameters that only the new build records (listed)")
     a = ap.parse_args()
     shutil.rmtree(a.work, ignore_errors=True)
     runs = {}
@@ -146,7 +167,10 @@ def main():
         runs[side] = run_all(b.resolve(), a.work / side)
     problems = [f"{k}: exit {runs['old'][k]} (old) vs {runs['new'][k]} (new)"
                 for k in runs["old"] if runs["old"][k] != runs["new"][k]]
-    files, diffs, pictures = compare(a.work / "old", a.work / "new", a.rel_tol)
+    files, diffs, pictures, added = compare(a.work / "old", a.work / "new", a.rel_tol,
+                                            a.new_params_ok)
+    for k in added:
+        print(f"  new parameter (accepted): {k}")
     problems += diffs
     print(f"compare_outputs: {len(runs['old'])} runs, {len(files)} files compared")
     for p in pictures:
