@@ -141,7 +141,7 @@ TEST(ObjectsJson, WriteReadRoundTrip) {
   a.box.width_m = 0.5;
   objects::FurnitureObject b = a;
   b.id = 2;
-  b.kind = "hanging";
+  b.kind = ObjectKind::kHanging;
   b.z_min_m = 2.0;
   b.z_max_m = 2.1;
   b.footprint_m = {{2, 2}, {2.5, 2}, {2.5, 2.5}, {2, 2.5}};
