@@ -22,7 +22,7 @@ for a in "$@"; do
     --sanitize) sanitize=1 ;;
     --fuzz) fuzz=1 ;;
     --no-bench) bench=OFF ;;
-    -h | --help) sed -n '2,15p' "$0"; exit 0 ;;
+    -h | --help) sed -n '2,14p' "$0"; exit 0 ;;
     *) echo "test.sh: unknown option '$a' (see --help)" >&2; exit 2 ;;
   esac
 done
