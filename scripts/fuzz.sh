@@ -1,59 +1,136 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets of tests/fuzz (clang-14, ASan + UBSan, in build-fuzz/) and runs
-# each for a bounded time: until RUNS executions or SECONDS seconds, whichever comes first, with
-# -rss_limit_mb=2048 -timeout=2 per input. Seeds: tests/fuzz/corpus/<t>/ and
-# tests/fuzz/regressions/<t>/ (read only); inputs found while fuzzing go to
-# build-fuzz/fuzz-corpus/<t>/, crashes to build-fuzz/fuzz-artifacts/<t>/. Prints one summary
-# line per target (also in build-fuzz/fuzz-summary.txt); exits 1 if any target found something.
+# Builds the libFuzzer targets of tests/fuzz in build-san/ (clang-14, ASan + UBSan, the same
+# tree and configure as ./test.sh --sanitize) and runs them, with -seed=1 -rss_limit_mb=2048
+# -timeout=2 per input. Seeds: tests/fuzz/corpus/<t>/ and tests/fuzz/regressions/<t>/ (read
+# only); inputs found while fuzzing go to build-san/fuzz-corpus/<t>/, crashes to
+# build-san/fuzz-artifacts/<t>/. Prints one summary line per target (also in
+# build-san/fuzz-summary.txt); exits 1 if any target found something or stayed below the floor.
 #
-# Usage: scripts/fuzz.sh [TARGET...]          (default: every target)
-# Env:   INDOORMAP_FUZZ_RUNS     (default 1000000)   executions per target
-#        INDOORMAP_FUZZ_SECONDS  (default 120)       seconds per target
-#        INDOORMAP_JOBS          (default 2)         build parallelism
-# Nightly length: INDOORMAP_FUZZ_RUNS=10000000 INDOORMAP_FUZZ_SECONDS=600 scripts/fuzz.sh
-# A finding: reproduce with build-fuzz/bin/fuzz_<t> <crash file>, minimise with
+# Usage: scripts/fuzz.sh [--nightly] [TARGET...]          (default: every target)
+# Budget mode (default, CI): ONE wall-clock budget for all targets together, PARALLEL targets at
+#   a time. Each target, when it starts, gets an even share of what is left (PARALLEL x the
+#   remaining seconds, minus what the running targets still hold, over the targets not yet
+#   run), and stops at its share or at RUNS executions; a target that stops early leaves its
+#   time to the rest. A target below MIN_RUNS executions is a failure: raise the budget.
+#   INDOORMAP_FUZZ_BUDGET    (default 900)     seconds for all targets together
+#   INDOORMAP_FUZZ_PARALLEL  (default 2)       targets run at a time (one per core)
+#   INDOORMAP_FUZZ_RUNS      (default 200000)  executions per target at most
+#   INDOORMAP_FUZZ_MIN_RUNS  (default 50000)   executions every target must reach
+# Per-target mode: INDOORMAP_FUZZ_SECONDS=S gives every target S seconds instead of a share.
+# Nightly (long mode): --nightly = INDOORMAP_FUZZ_RUNS=10000000 INDOORMAP_FUZZ_SECONDS=600
+#   INDOORMAP_FUZZ_PARALLEL=$(nproc), continuing from build-san/fuzz-corpus/ (see
+#   docs/robustness.md, "Nightly-length run").
+# INDOORMAP_JOBS (default 2): build parallelism.
+# A finding: reproduce with build-san/bin/fuzz_<t> <crash file>, minimise with
 # -minimize_crash=1 -runs=10000, fix, and add the file to tests/fuzz/regressions/<t>/ (ctest
 # replays it through test_fuzz_replay in every build).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-runs="${INDOORMAP_FUZZ_RUNS:-1000000}"
-seconds="${INDOORMAP_FUZZ_SECONDS:-120}"
-scripts/setup.sh build-fuzz -DINDOORMAP_FUZZ=ON -DINDOORMAP_BUILD_TESTS=OFF -DINDOORMAP_BUILD_BENCH=OFF
+targets=()
+nightly=0
+for a in "$@"; do
+  case "$a" in
+    --nightly) nightly=1 ;;
+    -h | --help) sed -n '2,26p' "$0"; exit 0 ;;
+    -*) echo "fuzz.sh: unknown option '$a' (see --help)" >&2; exit 2 ;;
+    *) targets+=("$a") ;;
+  esac
+done
+if [ $nightly = 1 ]; then
+  : "${INDOORMAP_FUZZ_RUNS:=10000000}" "${INDOORMAP_FUZZ_SECONDS:=600}"
+  : "${INDOORMAP_FUZZ_PARALLEL:=$(nproc)}"
+fi
+runs="${INDOORMAP_FUZZ_RUNS:-200000}"
+min_runs="${INDOORMAP_FUZZ_MIN_RUNS:-50000}"
+budget="${INDOORMAP_FUZZ_BUDGET:-900}"
+fixed="${INDOORMAP_FUZZ_SECONDS:-}"
+parallel="${INDOORMAP_FUZZ_PARALLEL:-2}"
+tree=build-san
 
-targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
   for d in tests/fuzz/corpus/*/; do targets+=("$(basename "$d")"); done
 fi
-export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-summary=build-fuzz/fuzz-summary.txt
-: >"$summary"
-failed=0
+# Only the fuzz binaries (a no-op after ./test.sh --sanitize, which built the whole tree).
+INDOORMAP_TARGETS="$(printf 'fuzz_%s ' "${targets[@]}")" scripts/setup.sh "$tree" \
+  -DINDOORMAP_FUZZ=ON -DINDOORMAP_BUILD_BENCH=OFF
 for t in "${targets[@]}"; do
-  bin=build-fuzz/bin/fuzz_$t
-  [ -x "$bin" ] || { echo "fuzz: no binary $bin (is '$t' in tests/fuzz/CMakeLists.txt?)" >&2; exit 1; }
-  work=build-fuzz/fuzz-corpus/$t art=build-fuzz/fuzz-artifacts/$t log=build-fuzz/fuzz-$t.log
-  mkdir -p "$work" "$art" tests/fuzz/regressions/"$t"
+  [ -x "$tree/bin/fuzz_$t" ] || {
+    echo "fuzz: no binary $tree/bin/fuzz_$t (is '$t' in tests/fuzz/CMakeLists.txt?)" >&2
+    exit 1
+  }
+done
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+
+# One target, in the background: its log, then one summary line in $tree/fuzz-result-<t>.txt.
+run_target() {
+  local t=$1 cap=$2
+  local work=$tree/fuzz-corpus/$t art=$tree/fuzz-artifacts/$t log=$tree/fuzz-$t.log
+  mkdir -p "$work" "$art"
+  local start rc=0
   start=$(date +%s)
-  rc=0
-  # A fixed seed makes the CI run reproducible: the same inputs in the same order, so a clean run
-  # here predicts a clean run there (a slower machine only stops earlier in the same sequence).
-  "$bin" -seed=1 -rss_limit_mb=2048 -timeout=2 -runs="$runs" -max_total_time="$seconds" \
+  # A fixed seed: the same inputs in the same order from the committed seeds, so a clean run
+  # here predicts a clean run in CI (a slower machine only stops earlier in the same sequence).
+  "$tree/bin/fuzz_$t" -seed=1 -rss_limit_mb=2048 -timeout=2 -runs="$runs" -max_total_time="$cap" \
     -print_final_stats=1 -artifact_prefix="$art/" "$work" tests/fuzz/corpus/"$t" \
     tests/fuzz/regressions/"$t" >"$log" 2>&1 || rc=$?
+  local secs execs rss cov result=clean
   secs=$(($(date +%s) - start))
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   rss=$(sed -n 's/^stat::peak_rss_mb: *//p' "$log" | tail -1)
   cov=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | cut -d' ' -f2)
-  result=clean
   if [ $rc -ne 0 ]; then
     result="FAILED (exit $rc): $(ls "$art" | tr '\n' ' ')"
-    failed=1
     grep -E "ERROR|SUMMARY|indoormap fuzz target|runtime error" "$log" | head -5 >&2 || true
+  elif [ "${execs:-0}" -lt "$min_runs" ]; then
+    result="SHORT: fewer than $min_runs executions in its ${cap} s (raise INDOORMAP_FUZZ_BUDGET)"
   fi
-  line=$(printf '%-8s %10s execs %5ss %8s exec/s  cov %-6s corpus %-5s peak %4s MB  %s' "$t" \
-    "${execs:-?}" "$secs" "$(( ${execs:-0} / (secs > 0 ? secs : 1) ))" "${cov:-?}" \
-    "$(ls "$work" | wc -l)" "${rss:-?}" "$result")
+  printf '%-11s %10s execs %5ss of %5ss %6s exec/s  cov %-6s corpus %-5s peak %4s MB  %s\n' \
+    "$t" "${execs:-?}" "$secs" "$cap" "$((${execs:-0} / (secs > 0 ? secs : 1)))" "${cov:-?}" \
+    "$(ls "$work" | wc -l)" "${rss:-?}" "$result" >"$tree/fuzz-result-$t.txt"
+}
+
+stage_start=$(date +%s)
+deadline=$((stage_start + budget))
+declare -A pid_end=()  # running pid -> the second its share ends
+queue=("${targets[@]}")
+while [ ${#queue[@]} -gt 0 ] || [ ${#pid_end[@]} -gt 0 ]; do
+  while [ ${#queue[@]} -gt 0 ] && [ ${#pid_end[@]} -lt "$parallel" ]; do
+    now=$(date +%s)
+    if [ -n "$fixed" ]; then
+      cap=$fixed
+    else
+      held=0
+      for p in "${!pid_end[@]}"; do
+        left=$((pid_end[$p] - now))
+        [ $left -gt 0 ] && held=$((held + left))
+      done
+      cap=$(((parallel * (deadline - now) - held) / ${#queue[@]}))
+      [ $cap -gt $((deadline - now)) ] && cap=$((deadline - now))
+      [ $cap -lt 10 ] && cap=10  # over budget already: the run is short, and says so
+    fi
+    t=${queue[0]}
+    queue=("${queue[@]:1}")
+    rm -f "$tree/fuzz-result-$t.txt"
+    run_target "$t" "$cap" &
+    pid_end[$!]=$((now + cap))
+    echo "fuzz: [$(date +%T)] $t started, $cap s at most" >&2
+  done
+  finished=
+  wait -n -p finished "${!pid_end[@]}" || true
+  [ -n "$finished" ] && unset "pid_end[$finished]"
+done
+
+summary=$tree/fuzz-summary.txt
+: >"$summary"
+failed=0
+for t in "${targets[@]}"; do
+  line=$(cat "$tree/fuzz-result-$t.txt" 2>/dev/null || echo "$t  no result (the runner died)")
   echo "fuzz: $line" >&2
   echo "$line" >>"$summary"
+  [[ "$line" == *" clean" ]] || failed=1
 done
+limit="budget $budget s"
+[ -n "$fixed" ] && limit="$fixed s per target"
+echo "fuzz: ${#targets[@]} targets in $(($(date +%s) - stage_start)) s of wall time ($limit," \
+  "$parallel at a time)" | tee -a "$summary" >&2
 exit $failed

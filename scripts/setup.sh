@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
 # Installs missing Debian packages (as root, or through sudo), then configures and builds.
 # Usage: scripts/setup.sh BUILD_DIR [extra cmake args...]
+#   A new BUILD_DIR is configured (Release, Ninja; clang-14 when the args hold -DINDOORMAP_FUZZ=ON);
+#   an existing one is configured again only when extra args are given (they update its cache).
+# Env: INDOORMAP_JOBS (default 2) build parallelism; INDOORMAP_TARGETS (default: all) the ninja
+#   targets to build, space separated.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(cmake g++ ninja-build pkg-config libpcl-dev libeigen3-dev libopencv-dev libyaml-cpp-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev)
-# The fuzz build (-DINDOORMAP_FUZZ=ON, scripts/fuzz.sh) needs clang and its sanitizer / libFuzzer
-# runtimes. (The gcc ASan + UBSan build needs nothing more: g++ brings libasan and libubsan.)
+# The sanitizer + fuzz build (-DINDOORMAP_FUZZ=ON: ./test.sh --sanitize, scripts/fuzz.sh) needs
+# clang and its sanitizer / libFuzzer runtimes.
 fuzz=0
 for a in "${@:2}"; do [ "$a" = "-DINDOORMAP_FUZZ=ON" ] && fuzz=1; done
 [ $fuzz -eq 1 ] && packages+=(clang-14 libclang-rt-14-dev)
@@ -31,5 +35,8 @@ if [ ! -f "$build_dir/build.ninja" ]; then
   else
     cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >&2
   fi
+elif [ $# -gt 0 ]; then
+  cmake "$build_dir" "$@" >/dev/null
 fi
-cmake --build "$build_dir" --parallel "${INDOORMAP_JOBS:-2}" >&2
+# shellcheck disable=SC2086  # INDOORMAP_TARGETS is a list
+cmake --build "$build_dir" --parallel "${INDOORMAP_JOBS:-2}" ${INDOORMAP_TARGETS:+--target $INDOORMAP_TARGETS} >&2
