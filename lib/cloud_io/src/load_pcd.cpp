@@ -57,14 +57,14 @@ std::uint32_t read_u32_le(std::string_view s, std::size_t at) {
          (std::uint32_t{b[3]} << 24);
 }
 
-}  // namespace
-
-PcdHeader read_pcd_header(std::string_view head, std::uint64_t file_size, const std::string& file,
-                          std::uint64_t max_points) {
-  if (file_size == 0) throw InputError(file, "empty file (no PCD header)");
-  PcdHeader h;
+// The header lines up to and including DATA: fills h, returns key -> header line; `line` ends on
+// the DATA line.
+std::map<std::string, std::size_t> parse_header_lines(std::string_view head,
+                                                      std::uint64_t file_size,
+                                                      const std::string& file, PcdHeader& h,
+                                                      std::size_t& line) {
   std::map<std::string, std::size_t> seen;  // key -> header line
-  std::size_t pos = 0, line = 0;
+  std::size_t pos = 0;
   bool have_data = false;
   auto fail = [&](const std::string& problem, std::size_t at) {
     throw InputError(file, "PCD header: " + problem, at);
@@ -149,8 +149,16 @@ PcdHeader read_pcd_header(std::string_view head, std::uint64_t file_size, const 
       fail("unknown header line '" + std::string(text.substr(0, 40)) + "'", line);
     }
   }
+  return seen;
+}
 
-  const std::size_t data_line = line;
+// Every required key, FIELDS / SIZE / TYPE / COUNT consistent, x y z floats, WIDTH x HEIGHT =
+// POINTS > 0. Sets h.point_size; returns the values per point.
+std::uint64_t check_fields(PcdHeader& h, const std::map<std::string, std::size_t>& seen,
+                           const std::string& file, std::size_t data_line) {
+  auto fail = [&](const std::string& problem, std::size_t at) {
+    throw InputError(file, "PCD header: " + problem, at);
+  };
   for (const char* key :
        {"VERSION", "FIELDS", "SIZE", "TYPE", "COUNT", "WIDTH", "HEIGHT", "POINTS"})
     if (!seen.count(key)) fail(std::string("no ") + key + " line before DATA", data_line);
@@ -198,8 +206,16 @@ PcdHeader read_pcd_header(std::string_view head, std::uint64_t file_size, const 
              " does not equal POINTS " + std::to_string(h.points),
          points_line);
   if (h.points == 0) fail("POINTS is 0: empty cloud", points_line);
+  return values_per_point;
+}
 
-  // The data section must be able to hold POINTS points; checked before anyone allocates.
+// The data section must be able to hold POINTS points; checked before anyone allocates.
+void check_data_section(const PcdHeader& h, std::string_view head, std::uint64_t file_size,
+                        const std::string& file, std::size_t data_line,
+                        std::uint64_t values_per_point) {
+  auto fail = [&](const std::string& problem, std::size_t at) {
+    throw InputError(file, "PCD header: " + problem, at);
+  };
   const std::uint64_t body = file_size > h.data_offset ? file_size - h.data_offset : 0;
   const auto too_short = [&](const std::string& detail) {
     throw InputError(file,
@@ -254,6 +270,19 @@ PcdHeader read_pcd_header(std::string_view head, std::uint64_t file_size, const 
     if (h.points > (body + 1) / min_bytes_per_point)
       too_short(std::to_string(body) + " bytes cannot hold that many ascii points");
   }
+}
+
+}  // namespace
+
+PcdHeader read_pcd_header(std::string_view head, std::uint64_t file_size, const std::string& file,
+                          std::uint64_t max_points) {
+  if (file_size == 0) throw InputError(file, "empty file (no PCD header)");
+  PcdHeader h;
+  std::size_t line = 0;
+  const auto seen = parse_header_lines(head, file_size, file, h, line);
+  const std::size_t data_line = line;
+  const std::uint64_t values_per_point = check_fields(h, seen, file, data_line);
+  check_data_section(h, head, file_size, file, data_line, values_per_point);
 
   if (h.points > max_points)
     throw BudgetError(file + ": POINTS " + std::to_string(h.points) +

@@ -156,6 +156,126 @@ void validate(const LayoutParams& lo) {
   require(lo.hanging_max_extent_m >= 0, "layout.hanging_max_extent_m: must be >= 0");
 }
 
+namespace {
+
+// The flood-fill seeds: the scanner positions, moved to the nearest passable cell when they fall on
+// an object.
+void place_seeds(Grid<std::uint8_t>& passable, const GridGeometry& geo,
+                 const std::vector<Eigen::Vector2d>& scanners_map, const LayoutParams& params,
+                 LayoutResult& r) {
+  const int radius =
+      std::max(1, static_cast<int>(std::ceil(params.seed_search_radius_m / geo.cell_m())));
+  for (const auto& s : scanners_map) {
+    const CellIndex c = geo.cell_of(s);
+    if (!geo.contains(c)) {
+      r.warnings.push_back("scanner at " + fmt_xy(s) + " lies outside the map; not used as a seed");
+      continue;
+    }
+    if (auto n = nearest_set(passable, c, radius)) {
+      r.seeds.push_back(*n);
+    } else {
+      r.warnings.push_back("no free cell within " + std::to_string(params.seed_search_radius_m) +
+                           " m of the scanner at " + fmt_xy(s) + "; not used as a seed");
+    }
+  }
+  if (r.seeds.empty()) {
+    // No usable scanner: take the free cell farthest from every obstacle (the middle of the
+    // largest open area), which is where a scanner most likely stood.
+    cv::Mat dist;
+    cv::distanceTransform(as_mat(passable), dist, cv::DIST_L2, cv::DIST_MASK_5);
+    double max_v = 0.0;
+    cv::Point max_p;
+    cv::minMaxLoc(dist, nullptr, &max_v, nullptr, &max_p);
+    if (max_v > 0.0) {
+      r.seeds.push_back({max_p.x, max_p.y});
+      r.seeds_estimated = true;
+      r.warnings.push_back(
+          "no scanner position known: estimated at " + fmt_xy(geo.center_of(r.seeds.back())) +
+          " (the free cell farthest from obstacles); pass --scanner X,Y,Z to set it");
+    } else {
+      r.warnings.push_back("no free space inside the walls: the layout has no free class");
+    }
+  }
+}
+
+// Flood fill of free space (4-connected, so diagonal gaps in a wall do not leak).
+Grid<std::uint8_t> flood_free(const Grid<std::uint8_t>& passable,
+                              const std::vector<CellIndex>& seeds) {
+  const int w = passable.width, h = passable.height;
+  Grid<std::uint8_t> free_mask(w, h, 0);
+  std::deque<CellIndex> q;
+  for (const auto& s : seeds)
+    if (!free_mask.at(s)) {
+      free_mask.at(s) = 1;
+      q.push_back(s);
+    }
+  while (!q.empty()) {
+    const CellIndex c = q.front();
+    q.pop_front();
+    for (int k = 0; k < 4; ++k) {
+      const int nc = c.col + kDx4[k], nr = c.row + kDy4[k];
+      if (!passable.contains(nc, nr) || !passable.at(nc, nr) || free_mask.at(nc, nr)) continue;
+      free_mask.at(nc, nr) = 1;
+      q.push_back({nc, nr});
+    }
+  }
+  return free_mask;
+}
+
+// Furniture stands in the room: an object (8-connected) that touches no free cell lies outside
+// it (seen through a window or the door) and stays unknown. Without free space, keep everything.
+void keep_furniture_in_room(Grid<std::uint8_t>& furn, const Grid<std::uint8_t>& free_mask) {
+  const int w = furn.width, h = furn.height;
+  if (std::any_of(free_mask.data.begin(), free_mask.data.end(), [](auto v) { return v != 0; })) {
+    cv::Mat obj_labels;
+    const int n_obj = cv::connectedComponents(as_mat(furn), obj_labels, 8, CV_32S);
+    std::vector<std::uint8_t> keep(static_cast<std::size_t>(n_obj), 0);
+    for (int row = 0; row < h; ++row)
+      for (int col = 0; col < w; ++col) {
+        const int lab = obj_labels.at<int>(row, col);
+        if (lab == 0 || keep[lab]) continue;
+        for (int k = 0; k < 4; ++k)
+          if (free_mask.contains(col + kDx4[k], row + kDy4[k]) &&
+              free_mask.at(col + kDx4[k], row + kDy4[k]))
+            keep[lab] = 1;
+      }
+    for (int row = 0; row < h; ++row)
+      for (int col = 0; col < w; ++col)
+        if (!keep[obj_labels.at<int>(row, col)]) furn.at(col, row) = 0;
+  }
+}
+
+// The classes of the layout (wall over furniture over free) and their cell counts.
+void classify(const Grid<std::uint8_t>& walls, const Grid<std::uint8_t>& furn,
+              const Grid<std::uint8_t>& free_mask, LayoutResult& r) {
+  for (std::size_t i = 0; i < r.layout.size(); ++i) {
+    Cell c = Cell::kUnknown;
+    if (walls.data[i])
+      c = Cell::kWall;
+    else if (furn.data[i])
+      c = Cell::kFurniture;
+    else if (free_mask.data[i])
+      c = Cell::kFree;
+    r.layout.data[i] = c;
+    switch (c) {
+      case Cell::kWall:
+        ++r.cells_wall;
+        break;
+      case Cell::kFurniture:
+        ++r.cells_furniture;
+        break;
+      case Cell::kFree:
+        ++r.cells_free;
+        break;
+      case Cell::kUnknown:
+        ++r.cells_unknown;
+        break;
+    }
+  }
+}
+
+}  // namespace
+
 LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::uint8_t>& furniture,
                           const GridGeometry& geo, const std::vector<Eigen::Vector2d>& scanners_map,
                           const LayoutParams& params, const Grid<std::uint8_t>* support) {
@@ -197,59 +317,8 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
   for (std::size_t i = 0; i < passable.size(); ++i)
     passable.data[i] = r.passage.data[i] && !walls.data[i] && !barrier.data[i];
 
-  // Seeds: the scanner positions, moved to the nearest passable cell when they fall on an object.
-  const int radius =
-      std::max(1, static_cast<int>(std::ceil(params.seed_search_radius_m / geo.cell_m())));
-  for (const auto& s : scanners_map) {
-    const CellIndex c = geo.cell_of(s);
-    if (!geo.contains(c)) {
-      r.warnings.push_back("scanner at " + fmt_xy(s) + " lies outside the map; not used as a seed");
-      continue;
-    }
-    if (auto n = nearest_set(passable, c, radius)) {
-      r.seeds.push_back(*n);
-    } else {
-      r.warnings.push_back("no free cell within " + std::to_string(params.seed_search_radius_m) +
-                           " m of the scanner at " + fmt_xy(s) + "; not used as a seed");
-    }
-  }
-  if (r.seeds.empty()) {
-    // No usable scanner: take the free cell farthest from every obstacle (the middle of the
-    // largest open area), which is where a scanner most likely stood.
-    cv::Mat dist;
-    cv::distanceTransform(as_mat(passable), dist, cv::DIST_L2, cv::DIST_MASK_5);
-    double max_v = 0.0;
-    cv::Point max_p;
-    cv::minMaxLoc(dist, nullptr, &max_v, nullptr, &max_p);
-    if (max_v > 0.0) {
-      r.seeds.push_back({max_p.x, max_p.y});
-      r.seeds_estimated = true;
-      r.warnings.push_back(
-          "no scanner position known: estimated at " + fmt_xy(geo.center_of(r.seeds.back())) +
-          " (the free cell farthest from obstacles); pass --scanner X,Y,Z to set it");
-    } else {
-      r.warnings.push_back("no free space inside the walls: the layout has no free class");
-    }
-  }
-
-  // Flood fill of free space (4-connected, so diagonal gaps in a wall do not leak).
-  Grid<std::uint8_t> free_mask(w, h, 0);
-  std::deque<CellIndex> q;
-  for (const auto& s : r.seeds)
-    if (!free_mask.at(s)) {
-      free_mask.at(s) = 1;
-      q.push_back(s);
-    }
-  while (!q.empty()) {
-    const CellIndex c = q.front();
-    q.pop_front();
-    for (int k = 0; k < 4; ++k) {
-      const int nc = c.col + kDx4[k], nr = c.row + kDy4[k];
-      if (!passable.contains(nc, nr) || !passable.at(nc, nr) || free_mask.at(nc, nr)) continue;
-      free_mask.at(nc, nr) = 1;
-      q.push_back({nc, nr});
-    }
-  }
+  place_seeds(passable, geo, scanners_map, params, r);
+  const Grid<std::uint8_t> free_mask = flood_free(passable, r.seeds);
 
   // Furniture: furniture-band obstacles inside the passage area, plus small unreachable pockets
   // that touch them (behind and between objects).
@@ -295,50 +364,8 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
           furn.at(col, row) = 1;
   }
 
-  // Furniture stands in the room: an object (8-connected) that touches no free cell lies outside
-  // it (seen through a window or the door) and stays unknown. Without free space, keep everything.
-  if (std::any_of(free_mask.data.begin(), free_mask.data.end(), [](auto v) { return v != 0; })) {
-    cv::Mat obj_labels;
-    const int n_obj = cv::connectedComponents(as_mat(furn), obj_labels, 8, CV_32S);
-    std::vector<std::uint8_t> keep(static_cast<std::size_t>(n_obj), 0);
-    for (int row = 0; row < h; ++row)
-      for (int col = 0; col < w; ++col) {
-        const int lab = obj_labels.at<int>(row, col);
-        if (lab == 0 || keep[lab]) continue;
-        for (int k = 0; k < 4; ++k)
-          if (free_mask.contains(col + kDx4[k], row + kDy4[k]) &&
-              free_mask.at(col + kDx4[k], row + kDy4[k]))
-            keep[lab] = 1;
-      }
-    for (int row = 0; row < h; ++row)
-      for (int col = 0; col < w; ++col)
-        if (!keep[obj_labels.at<int>(row, col)]) furn.at(col, row) = 0;
-  }
-
-  for (std::size_t i = 0; i < r.layout.size(); ++i) {
-    Cell c = Cell::kUnknown;
-    if (walls.data[i])
-      c = Cell::kWall;
-    else if (furn.data[i])
-      c = Cell::kFurniture;
-    else if (free_mask.data[i])
-      c = Cell::kFree;
-    r.layout.data[i] = c;
-    switch (c) {
-      case Cell::kWall:
-        ++r.cells_wall;
-        break;
-      case Cell::kFurniture:
-        ++r.cells_furniture;
-        break;
-      case Cell::kFree:
-        ++r.cells_free;
-        break;
-      case Cell::kUnknown:
-        ++r.cells_unknown;
-        break;
-    }
-  }
+  keep_furniture_in_room(furn, free_mask);
+  classify(walls, furn, free_mask, r);
   return r;
 }
 

@@ -23,7 +23,8 @@ struct Planner {
   bool inside(const V2& lo, const V2& hi) const {
     for (int i = 0; i <= 4; ++i)
       for (int j = 0; j <= 4; ++j)
-        if (!contains(polygon, V2(lo.x() + (hi.x() - lo.x()) * i / 4.0, lo.y() + (hi.y() - lo.y()) * j / 4.0)))
+        if (!contains(polygon, V2(lo.x() + (hi.x() - lo.x()) * i / 4.0,
+                                  lo.y() + (hi.y() - lo.y()) * j / 4.0)))
           return false;
     return true;
   }
@@ -68,12 +69,10 @@ struct LocalRoom {
   std::vector<ScannerPose> scanners;
 };
 
-/// A furnished room with its south wall on y = y0, x in [x0, x0 + w], depth d, door in edge 0.
-LocalRoom make_room(Rng& rng, const RandomSceneParams& p, int index, double x0, double y0, double w, double d, double t) {
-  LocalRoom lr;
-  Room& room = lr.room;
-  room.name = "room_" + std::to_string(index);
-  room.wall_thickness_m = t;
+/// The room's ceiling, outline (a rectangle, or an L) with its south wall on y = y0, the door
+/// into the corridor (edge 0) and the windows in the north wall. Returns whether it is an L.
+bool shape_room(Rng& rng, const RandomSceneParams& p, double x0, double y0, double w, double d,
+                double t, Room& room) {
   room.ceiling.height_m = rng.uniform(2.6, 3.2);
   if (rng.uniform() < p.sloped_ceiling_probability) {
     room.ceiling.height_m = rng.uniform(2.4, 2.7);
@@ -85,8 +84,12 @@ LocalRoom make_room(Rng& rng, const RandomSceneParams& p, int index, double x0, 
   double north_len = w;
   if (l_shape) {
     const double cx = rng.uniform(0.3, 0.45) * w, cy = rng.uniform(0.3, 0.45) * d;
-    room.polygon = {{x0, y0}, {x0 + w, y0}, {x0 + w, y0 + d - cy}, {x0 + w - cx, y0 + d - cy},
-                    {x0 + w - cx, y0 + d}, {x0, y0 + d}};
+    room.polygon = {{x0, y0},
+                    {x0 + w, y0},
+                    {x0 + w, y0 + d - cy},
+                    {x0 + w - cx, y0 + d - cy},
+                    {x0 + w - cx, y0 + d},
+                    {x0, y0 + d}};
     north_edge = 4;
     north_len = w - cx;
   } else {
@@ -112,23 +115,16 @@ LocalRoom make_room(Rng& rng, const RandomSceneParams& p, int index, double x0, 
     if (win.width_m < 0.5) break;
     win.bottom_m = rng.uniform(0.8, 1.0);
     win.top_m = std::min(rng.uniform(2.0, 2.3), lowest - 0.2);
-    win.at_m = rng.uniform(start + margin_w + win.width_m / 2, start + share - margin_w - win.width_m / 2);
+    win.at_m =
+        rng.uniform(start + margin_w + win.width_m / 2, start + share - margin_w - win.width_m / 2);
     room.windows.push_back(win);
   }
+  return l_shape;
+}
 
-  Planner plan;
-  plan.polygon = room.polygon;
-  // Keep clear: the area in front of the door and around the scanner.
-  const V2 door_c(x0 + door.at_m, y0 + 0.6);
-  plan.taken.emplace_back(door_c - V2(door.width_m / 2 + 0.2, 0.8), door_c + V2(door.width_m / 2 + 0.2, 0.8));
-  V2 scanner_xy(x0 + w * rng.uniform(0.4, 0.6), y0 + (l_shape ? 0.5 : 1.0) * d * rng.uniform(0.4, 0.6));
-  plan.taken.emplace_back(scanner_xy.array() - 0.45, scanner_xy.array() + 0.45);
-  ScannerPose sp;
-  sp.position_m = Eigen::Vector3d(scanner_xy.x(), scanner_xy.y(), rng.uniform(1.2, 1.5));
-  sp.heading_deg = rng.uniform(0, 360);
-  lr.scanners.push_back(sp);
-
-  auto& F = lr.furniture;
+/// The furniture of the room, placed where `plan` has space; lamps hang clear of the scanner.
+void furnish_room(Rng& rng, Planner& plan, const Room& room, double x0, double y0, double w,
+                  double d, const V2& scanner_xy, std::vector<Furniture>& F) {
   // Desks with chairs along the north wall(s): walk along y = y0 + d (or the L's lower top).
   const int ndesk = rng.uniform_int(1, 3);
   for (int k = 0; k < ndesk; ++k) {
@@ -141,7 +137,8 @@ LocalRoom make_room(Rng& rng, const RandomSceneParams& p, int index, double x0, 
       const V2 c(x, ytop - 0.02 - size.y() / 2);
       if (!plan.place(c, V2(size.x(), size.y() + 0.7))) continue;  // includes the chair's space
       F.push_back(item(FurnitureType::kDesk, c, size, 0));
-      F.push_back(item(FurnitureType::kChair, c - V2(0, size.y() / 2 + 0.3), V2(0.45, 0.45), 90 + rng.uniform(-20, 20)));
+      F.push_back(item(FurnitureType::kChair, c - V2(0, size.y() / 2 + 0.3), V2(0.45, 0.45),
+                       90 + rng.uniform(-20, 20)));
       break;
     }
   }
@@ -167,7 +164,8 @@ LocalRoom make_room(Rng& rng, const RandomSceneParams& p, int index, double x0, 
   // A table in the middle, with chairs.
   if (rng.uniform() < 0.7) {
     const bool round = rng.uniform() < 0.3;
-    const V2 size = round ? V2::Constant(2 * rng.uniform(0.45, 0.65)) : V2(rng.uniform(1.4, 2.4), rng.uniform(0.8, 1.1));
+    const V2 size = round ? V2::Constant(2 * rng.uniform(0.45, 0.65))
+                          : V2(rng.uniform(1.4, 2.4), rng.uniform(0.8, 1.1));
     for (int attempt = 0; attempt < 30; ++attempt) {
       const V2 c(rng.uniform(x0 + 1.2, x0 + w - 1.2), rng.uniform(y0 + 1.2, y0 + d - 1.2));
       if (!plan.place(c, size + V2(1.0, 1.0))) continue;
@@ -182,7 +180,8 @@ LocalRoom make_room(Rng& rng, const RandomSceneParams& p, int index, double x0, 
         const V2 dir(std::cos(a), std::sin(a));
         const V2 off(dir.x() * (size.x() / 2 + 0.25), dir.y() * (size.y() / 2 + 0.25));
         // The chair faces the table: its local +x points at it.
-        F.push_back(item(FurnitureType::kChair, c + off, V2(0.45, 0.45), std::atan2(-dir.y(), -dir.x()) / kDeg + rng.uniform(-10, 10)));
+        F.push_back(item(FurnitureType::kChair, c + off, V2(0.45, 0.45),
+                         std::atan2(-dir.y(), -dir.x()) / kDeg + rng.uniform(-10, 10)));
       }
       break;
     }
@@ -192,7 +191,8 @@ LocalRoom make_room(Rng& rng, const RandomSceneParams& p, int index, double x0, 
   for (int k = 0; k < nbin; ++k) {
     const double r = rng.uniform(0.12, 0.2);
     for (int attempt = 0; attempt < 30; ++attempt) {
-      const V2 c(rng.uniform(x0 + r + 0.05, x0 + w - r - 0.05), rng.uniform(y0 + r + 0.05, y0 + d - r - 0.05));
+      const V2 c(rng.uniform(x0 + r + 0.05, x0 + w - r - 0.05),
+                 rng.uniform(y0 + r + 0.05, y0 + d - r - 0.05));
       if (!plan.place(c, V2::Constant(2 * r))) continue;
       F.push_back(round_item(FurnitureType::kBin, c, r, rng.uniform(0.3, 0.5)));
       break;
@@ -218,10 +218,39 @@ LocalRoom make_room(Rng& rng, const RandomSceneParams& p, int index, double x0, 
     if ((c - scanner_xy).norm() < 0.9) lamp.drop_m = 0.1;
     F.push_back(lamp);
   }
+}
+
+/// A furnished room with its south wall on y = y0, x in [x0, x0 + w], depth d, door in edge 0.
+LocalRoom make_room(Rng& rng, const RandomSceneParams& p, int index, double x0, double y0, double w,
+                    double d, double t) {
+  LocalRoom lr;
+  Room& room = lr.room;
+  room.name = "room_" + std::to_string(index);
+  room.wall_thickness_m = t;
+  const bool l_shape = shape_room(rng, p, x0, y0, w, d, t, room);
+  const Opening& door = room.doors.front();
+
+  Planner plan;
+  plan.polygon = room.polygon;
+  // Keep clear: the area in front of the door and around the scanner.
+  const V2 door_c(x0 + door.at_m, y0 + 0.6);
+  plan.taken.emplace_back(door_c - V2(door.width_m / 2 + 0.2, 0.8),
+                          door_c + V2(door.width_m / 2 + 0.2, 0.8));
+  V2 scanner_xy(x0 + w * rng.uniform(0.4, 0.6),
+                y0 + (l_shape ? 0.5 : 1.0) * d * rng.uniform(0.4, 0.6));
+  plan.taken.emplace_back(scanner_xy.array() - 0.45, scanner_xy.array() + 0.45);
+  ScannerPose sp;
+  sp.position_m = Eigen::Vector3d(scanner_xy.x(), scanner_xy.y(), rng.uniform(1.2, 1.5));
+  sp.heading_deg = rng.uniform(0, 360);
+  lr.scanners.push_back(sp);
+  furnish_room(rng, plan, room, x0, y0, w, d, scanner_xy, lr.furniture);
   return lr;
 }
 
-V2 rotate(const V2& p, double yaw) { return {std::cos(yaw) * p.x() - std::sin(yaw) * p.y(), std::sin(yaw) * p.x() + std::cos(yaw) * p.y()}; }
+V2 rotate(const V2& p, double yaw) {
+  return {std::cos(yaw) * p.x() - std::sin(yaw) * p.y(),
+          std::sin(yaw) * p.x() + std::cos(yaw) * p.y()};
+}
 
 }  // namespace
 
@@ -255,7 +284,8 @@ Scene random_scene(std::uint64_t seed, const RandomSceneParams& p) {
         f.yaw_deg = -f.yaw_deg;
       }
       for (auto& s : lr.scanners) s.position_m.y() = -cw - s.position_m.y();
-      if (lr.room.ceiling.slope_deg > 0) lr.room.ceiling.rise_azimuth_deg = -lr.room.ceiling.rise_azimuth_deg;
+      if (lr.room.ceiling.slope_deg > 0)
+        lr.room.ceiling.rise_azimuth_deg = -lr.room.ceiling.rise_azimuth_deg;
     }
     locals.push_back(std::move(lr));
   }
@@ -268,7 +298,8 @@ Scene random_scene(std::uint64_t seed, const RandomSceneParams& p) {
   corridor.polygon = {{-1.5, -cw}, {length + 1.5, -cw}, {length + 1.5, 0.0}, {-1.5, 0.0}};
   // Rooms must not have openings above the corridor's ceiling on the shared wall.
   for (auto& lr : locals)
-    for (auto& door : lr.room.doors) door.top_m = std::min(door.top_m, corridor.ceiling.height_m - 0.2);
+    for (auto& door : lr.room.doors)
+      door.top_m = std::min(door.top_m, corridor.ceiling.height_m - 0.2);
   for (auto& lr : locals) {
     scene.rooms.push_back(lr.room);
     scene.furniture.insert(scene.furniture.end(), lr.furniture.begin(), lr.furniture.end());

@@ -1,0 +1,156 @@
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "objects_internal.hpp"
+
+namespace indoormap::objects::detail {
+
+namespace {
+
+// A top surface this close below the scanner is seen at so grazing an angle that its samples
+// leave gaps: no data there is no evidence of an empty cell.
+constexpr double kMinDropBelowScanner_m = 0.1;
+
+}  // namespace
+
+// The occupied run of a voxel column starting above the floor: the first occupied layer at
+// least two layers above the floor layer (the floor smears into the next one), then upward
+// while empty gaps stay within max_gap layers.
+Column column_extent(const cloud::VoxelGrid& g, int col, int row, std::int64_t floor_layer,
+                     std::int64_t top_layer, std::int64_t max_gap) {
+  Column c;
+  for (std::int64_t z = std::max<std::int64_t>(0, floor_layer + 2);
+       z <= std::min(top_layer, g.nz - 1); ++z) {
+    if (!g.count(col, row, z)) {
+      if (c.bottom >= 0 && z - c.top > max_gap) break;
+      continue;
+    }
+    if (c.bottom < 0) c.bottom = z;
+    c.top = z;
+  }
+  return c;
+}
+
+bool floor_seen(const cloud::VoxelGrid& g, int col, int row, std::int64_t floor_layer) {
+  for (std::int64_t z = std::max<std::int64_t>(0, floor_layer - 1);
+       z <= std::min(floor_layer + 1, g.nz - 1); ++z)
+    if (g.count(col, row, z)) return true;
+  return false;
+}
+
+// True when the straight line from the scanner to `target` (map frame) crosses no occupied voxel,
+// leaving out the last `skip_end_m` (horizontally) before the target: the target's own column and
+// its neighbours hold the surface the line ends on.
+bool line_of_sight(const cloud::VoxelGrid& g, const Eigen::Vector3d& scanner,
+                   const Eigen::Vector3d& target, double skip_end_m) {
+  const Eigen::Vector3d d = target - scanner;
+  const double horiz = d.head<2>().norm();
+  if (horiz <= skip_end_m) return true;
+  const double step = 0.5 * g.cell_m;
+  const auto n = static_cast<std::int64_t>(std::ceil((horiz - skip_end_m) / (step)));
+  for (std::int64_t i = 0; i <= n; ++i) {
+    const double t = std::min(1.0, i * step / horiz);
+    const Eigen::Vector3d p = scanner + t * d;
+    const VoxelIndex v = g.voxel_of(p);
+    if (!g.contains(v)) continue;
+    if (g.count(v.ix, v.iy, v.iz)) return false;
+  }
+  return true;
+}
+
+ColumnScan scan_columns(const Grid<Cell>& layout, const cloud::VoxelGrid& voxels,
+                        const cloud::LayerAnalysis& layers, const ObjectParams& params,
+                        Grid<std::uint8_t>& mask) {
+  const std::int64_t floor_layer = layers.floor_layer, ceiling_layer = layers.ceiling_layer;
+  const int w = layout.width, h = layout.height;
+  const auto max_gap =
+      static_cast<std::int64_t>(std::ceil(voxels.to_cells(params.max_vertical_gap_m)));
+  ColumnScan s{Grid<Column>(w, h), Grid<std::uint8_t>(w, h, 0),
+               cv::Mat(h, w, CV_8U, cv::Scalar(1))};
+  Grid<Column>& cols = s.cols;
+  Grid<std::uint8_t>& pocket = s.pocket;
+  cv::Mat& no_data = s.no_data;
+  bool& any_data = s.any_data;
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c)
+      if (mask.at(c, r)) {
+        // Below the ceiling (and the ceiling's own smear): a cell with only ceiling returns above
+        // it has no height.
+        cols.at(c, r) = column_extent(voxels, c, r, floor_layer, ceiling_layer - 2, max_gap);
+        bool wall_face = false;
+        if (cols.at(c, r).top >= layers.wall_band.lo_layer)
+          for (int dr = -kWallFaceCells; dr <= kWallFaceCells && !wall_face; ++dr)
+            for (int dc = -kWallFaceCells; dc <= kWallFaceCells; ++dc)
+              if (layout.contains(c + dc, r + dr) && layout.at(c + dc, r + dr) == Cell::kWall)
+                wall_face = true;
+        if (wall_face) cols.at(c, r) = Column{};
+        if (!wall_face && cols.at(c, r).top < 0) {
+          // The floor seen: nothing stands here (an enclosed pocket the scanner saw into).
+          if (floor_seen(voxels, c, r, floor_layer)) {
+            mask.at(c, r) = 0;
+            continue;
+          }
+          pocket.at(c, r) = 1;
+        }
+        if (cols.at(c, r).top >= 0) {
+          no_data.at<std::uint8_t>(r, c) = 0;
+          any_data = true;
+        }
+      }
+  return s;
+}
+
+Grid<float> fill_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
+                      const ColumnScan& scan, const std::vector<Eigen::Vector3d>& scanners_map,
+                      Grid<std::uint8_t>& mask) {
+  const int w = mask.width, h = mask.height;
+  const Grid<Column>& cols = scan.cols;
+  const Grid<std::uint8_t>& pocket = scan.pocket;
+  const cv::Mat& no_data = scan.no_data;
+  const bool any_data = scan.any_data;
+  Grid<float> top(w, h, kNoHeight);
+  if (any_data) {
+    cv::Mat dist, nearest;
+    cv::distanceTransform(no_data, dist, nearest, cv::DIST_L2, cv::DIST_MASK_5,
+                          cv::DIST_LABEL_PIXEL);
+    std::vector<CellIndex> seed_of(1, CellIndex{});  // label -> data cell
+    // Gaps of a few cells between data cells are missed samples (a top seen at a grazing angle),
+    // not evidence of an empty cell.
+    cv::Mat near_data;
+    cv::morphologyEx(no_data == 0, near_data, cv::MORPH_CLOSE,
+                     cv::getStructuringElement(cv::MORPH_RECT, {3, 3}), {-1, -1}, 2);
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w; ++c)
+        if (!no_data.at<std::uint8_t>(r, c)) {
+          const int lab = nearest.at<int>(r, c);
+          if (static_cast<std::size_t>(lab) >= seed_of.size()) seed_of.resize(lab + 1);
+          seed_of[lab] = {c, r};
+        }
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w; ++c)
+        if (mask.at(c, r)) {
+          const CellIndex s = seed_of[nearest.at<int>(r, c)];
+          top.at(c, r) = static_cast<float>(voxels.layer_center_m(cols.at(s).top));
+          // A pocket cell (no data, floor unseen) is the hidden part of the object next to it
+          // only if that object's top surface, carried over the cell, would be hidden too. A
+          // scanner that could see it there and saw nothing proves the object ends before it:
+          // the shadow behind a bin, fenced in by other obstacles, is not part of the bin.
+          if (!pocket.at(c, r) || near_data.at<std::uint8_t>(r, c)) continue;
+          const Eigen::Vector3d target(
+              geo.origin_m().x() + (c + 0.5) * geo.cell_m(),
+              geo.origin_m().y() + (r + 0.5) * geo.cell_m(),
+              voxels.layer_bottom_m(cols.at(s).top + 1) + 0.25 * voxels.cell_m);
+          for (const auto& sc : scanners_map)
+            if (target.z() < sc.z() - kMinDropBelowScanner_m &&
+                line_of_sight(voxels, sc, target, 1.5 * geo.cell_m())) {
+              mask.at(c, r) = 0;
+              top.at(c, r) = kNoHeight;
+              break;
+            }
+        }
+  }
+  return top;
+}
+
+}  // namespace indoormap::objects::detail

@@ -1,0 +1,105 @@
+#pragma once
+// Internal to im_objects: the stages of extract_objects, one file each (geometry.cpp: footprints
+// and fits; heights.cpp: voxel columns and tops; pillars_lamps.cpp: the wall-class and ceiling
+// objects; crops.cpp: crop_indices; objects.cpp: the composition).
+#include <Eigen/Core>
+#include <cstdint>
+#include <limits>
+#include <opencv2/core.hpp>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "indoormap/objects/objects.hpp"
+
+namespace indoormap::objects::detail {
+
+constexpr float kNoHeight = std::numeric_limits<float>::quiet_NaN();
+// Cells this close to a wall cell whose column reaches the wall band hold the wall's face (the
+// wall class comes from the wall band and may sit a cell or two off the lower face).
+constexpr int kWallFaceCells = 3;
+
+struct Column {
+  std::int64_t bottom = -1, top = -1;  // layers; -1: nothing above the floor
+};
+
+// The occupied run of a voxel column starting above the floor: the first occupied layer at
+// least two layers above the floor layer (the floor smears into the next one), then upward
+// while empty gaps stay within max_gap layers.
+Column column_extent(const cloud::VoxelGrid& g, int col, int row, std::int64_t floor_layer,
+                     std::int64_t top_layer, std::int64_t max_gap);
+
+bool floor_seen(const cloud::VoxelGrid& g, int col, int row, std::int64_t floor_layer);
+
+// True when the straight line from the scanner to `target` (map frame) crosses no occupied voxel,
+// leaving out the last `skip_end_m` (horizontally) before the target: the target's own column and
+// its neighbours hold the surface the line ends on.
+bool line_of_sight(const cloud::VoxelGrid& g, const Eigen::Vector3d& scanner,
+                   const Eigen::Vector3d& target, double skip_end_m);
+
+/// Column extents of the furniture cells (scan_columns); cells whose floor is seen and nothing
+/// stands on leave the mask.
+struct ColumnScan {
+  Grid<Column> cols;
+  Grid<std::uint8_t> pocket;  // furniture cells without data, floor unseen
+  cv::Mat no_data;
+  bool any_data = false;
+};
+
+ColumnScan scan_columns(const Grid<Cell>& layout, const cloud::VoxelGrid& voxels,
+                        const cloud::LayerAnalysis& layers, const ObjectParams& params,
+                        Grid<std::uint8_t>& mask);
+
+/// The top of every mask cell (kNoHeight without data); pocket cells a scanner could see into
+/// leave the mask.
+Grid<float> fill_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
+                      const ColumnScan& scan, const std::vector<Eigen::Vector3d>& scanners_map,
+                      Grid<std::uint8_t>& mask);
+
+OrientedBox min_area_box(const std::vector<Eigen::Vector2d>& pts);
+
+// The four corners of a cell (map metres), for minimum-area rectangles of cell sets.
+void add_cell_corners(const GridGeometry& geo, CellIndex c, std::vector<Eigen::Vector2d>& out);
+
+// The box's axes: along its length, and across.
+std::pair<Eigen::Vector2d, Eigen::Vector2d> box_axes(const OrientedBox& b);
+
+// The box as a counter-clockwise polygon.
+std::vector<Eigen::Vector2d> box_polygon(const OrientedBox& b);
+
+// Twice the signed area (counter-clockwise positive).
+double signed_area2(const std::vector<Eigen::Vector2d>& poly);
+
+// Outline of the cells of one label, traced on a 4x upsampled mask eroded by one pixel: it runs
+// 1/8 cell outside the centres of the boundary cells. A boundary cell holds the object's surface
+// somewhere inside it, so its centre is the unbiased estimate; the cell edges would make every
+// object half a cell too large on each side (a 0.36 m bin 30 % too large in area). A label that
+// the erosion splits (cells joined only at a corner) is traced along its cell edges instead.
+std::vector<Eigen::Vector2d> outline(const Grid<std::int32_t>& labels, int id, CellIndex lo,
+                                     CellIndex hi, const GridGeometry& geo);
+
+struct Circle {
+  Eigen::Vector2d center = Eigen::Vector2d::Zero();
+  double radius = 0.0, rms = 0.0;
+};
+
+// Algebraic (Kasa) circle fit: x^2 + y^2 + D x + E y + F = 0 in least squares.
+std::optional<Circle> fit_circle(const std::vector<Eigen::Vector2d>& pts);
+
+// Pillars and columns: wall-class components that stand free in the room (few unknown cells
+// around them) and are small. They reach the wall band, so the paper's layout makes them wall, and
+// a scanner sees only their front: the footprint is the circle fitted to the seen face when it
+// fits (a round pillar), else the minimum-area rectangle of the seen cells.
+void add_pillars(const Grid<Cell>& layout, const GridGeometry& geo, const cloud::VoxelGrid& voxels,
+                 const cloud::LayerAnalysis& layers, const ObjectParams& params,
+                 ObjectsResult& res);
+
+// Lamps and other ceiling fixtures: points hanging above the furniture band and below the
+// ceiling, over the room (known cells more than kWallFaceCells from a wall), with empty space
+// between them and what stands below. The wall band's projection leaves them out (thin slabs, not
+// walls) and the furniture band ends below them, so no other class holds them. Their cells may lie
+// over a table's: they are listed with their own cell list, not in `labels`.
+void add_lamps(const Grid<Cell>& layout, const GridGeometry& geo, const cloud::VoxelGrid& voxels,
+               const cloud::LayerAnalysis& layers, const ObjectParams& params, ObjectsResult& res);
+
+}  // namespace indoormap::objects::detail

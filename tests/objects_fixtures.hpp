@@ -1,0 +1,45 @@
+#pragma once
+// Shared fixtures of the test_objects_*.cpp files: flat layers and hand-filled voxel grids.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <opencv2/imgproc.hpp>
+#include <random>
+#include <set>
+
+#include "indoormap/core/errors.hpp"
+#include "indoormap/objects/objects.hpp"
+
+using namespace indoormap;
+using namespace indoormap::objects;
+
+namespace objects_fixtures {
+
+// Floor at layer 0, ceiling far above, wall band out of reach: heights as drawn.
+inline cloud::LayerAnalysis flat_layers() {
+  cloud::LayerAnalysis a;
+  a.floor_layer = 0;
+  a.ceiling_layer = 1000;
+  a.wall_band.lo_layer = 999;
+  a.wall_band.hi_layer = 1000;
+  return a;
+}
+
+// Voxel grid of w x h columns, cell 0.05 m, floor layer 0 (z in [0, 0.05)), nz layers.
+inline cloud::VoxelGrid voxels(int w, int h, int nz) {
+  cloud::VoxelGrid g;
+  g.cell_m = 0.05;
+  g.nx = w;
+  g.ny = h;
+  g.nz = nz;
+  g.counts.assign(static_cast<std::size_t>(w) * h * nz, 0);
+  return g;
+}
+inline void fill_column(cloud::VoxelGrid& g, int c, int r, double z0, double z1,
+                        std::uint16_t n = 2) {
+  for (std::int64_t z = static_cast<std::int64_t>(z0 / g.cell_m);
+       z < static_cast<std::int64_t>(z1 / g.cell_m); ++z)
+    g.counts[(z * g.ny + r) * g.nx + c] = n;
+}
+
+}  // namespace objects_fixtures
