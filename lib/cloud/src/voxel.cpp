@@ -152,9 +152,11 @@ VoxelGrid voxelize(const std::vector<Eigen::Vector3f>& points, const Bounds3& bo
   if (total > static_cast<double>(params.max_cells) || g.nx > std::numeric_limits<int>::max() / 2 ||
       g.ny > std::numeric_limits<int>::max() / 2) {
     std::ostringstream msg;
-    msg << "the voxel grid would be " << g.nx << " x " << g.ny << " x " << g.nz << " = "
-        << static_cast<std::int64_t>(total) << " cells of " << params.cell_m
-        << " m, above the budget of " << params.max_cells
+    msg << "the voxel grid would be " << g.nx << " x " << g.ny << " x " << g.nz
+        << " = "
+        // (total can exceed what an int64 holds: casting it then is undefined behaviour)
+        << (total < 9e18 ? std::to_string(static_cast<std::int64_t>(total)) : std::to_string(total))
+        << " cells of " << params.cell_m << " m, above the budget of " << params.max_cells
         << " cells (voxel.max_cells); raise the budget, use a larger cell_m, or crop the cloud";
     throw BudgetError(msg.str());
   }
