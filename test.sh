@@ -4,7 +4,7 @@
 # Usage: ./test.sh [--sanitize] [--fuzz] [--no-bench]
 #   (no flag)    build/ (gcc, Release, with the benchmarks) and ctest.
 #   --no-bench   build/ without the benchmarks (CI; the same as INDOORMAP_BUILD_BENCH=OFF).
-#   --sanitize   then build-san/: clang-14, AddressSanitizer + UndefinedBehaviorSanitizer, -O1,
+#   --sanitize   then build-san/: clang-14, AddressSanitizer + UndefinedBehaviorSanitizer, -O2,
 #                the test suite and the fuzz binaries from ONE configure (-DINDOORMAP_FUZZ=ON),
 #                and the whole suite under it; any report fails it.
 #   --fuzz       then every libFuzzer target of tests/fuzz from build-san/, all within one budget

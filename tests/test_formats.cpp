@@ -12,6 +12,7 @@
 #include "indoormap/formats/pgm.hpp"
 #include "indoormap/formats/room_geojson.hpp"
 #include "indoormap/formats/ros_map.hpp"
+#include "map_yaml.hpp"
 #include "indoormap/formats/route_json.hpp"
 #include "indoormap/objects/objects.hpp"
 #include "indoormap/sim/eval.hpp"
@@ -49,7 +50,7 @@ TEST(RosMap, WriteReadRoundTrip) {
   g.at(2, 1) = Cell::kUnknown;
   const GridGeometry geo({-1.25, 2.5}, 0.1, 5, 3);
   formats::write_ros_map(dir, "map", g, geo);
-  const formats::RosMap m = formats::read_ros_map(dir / "map.yaml");
+  const formats::RosMap m = app::read_ros_map(dir / "map.yaml");
   EXPECT_EQ(m.geometry, geo);
   EXPECT_EQ(m.meta.image, "map.pgm");
   Grid<Cell> expected = g;
@@ -71,7 +72,7 @@ TEST(RosMap, BothYamlSpellingsReadBackTheSame) {
             "image: map.pgm\nresolution: 0.05\norigin: [0.0, -0.30000000000000004, 0.0]\n"
             "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n");
   for (const char* f : {"a.yaml", "b.yaml"}) {
-    const formats::RosMapMeta back = formats::read_map_yaml(dir / f);
+    const formats::RosMapMeta back = app::read_map_yaml(dir / f);
     EXPECT_EQ(back.image, meta.image) << f;
     EXPECT_EQ(back.resolution_m, meta.resolution_m) << f;
     EXPECT_EQ(back.negate, meta.negate) << f;
@@ -79,8 +80,8 @@ TEST(RosMap, BothYamlSpellingsReadBackTheSame) {
     EXPECT_EQ(back.free_thresh, meta.free_thresh) << f;
   }
   // Only the shortest spelling keeps every bit of the origin.
-  EXPECT_EQ(formats::read_map_yaml(dir / "b.yaml").origin, meta.origin);
-  EXPECT_NEAR(formats::read_map_yaml(dir / "a.yaml").origin.y(), meta.origin.y(), 1e-9);
+  EXPECT_EQ(app::read_map_yaml(dir / "b.yaml").origin, meta.origin);
+  EXPECT_NEAR(app::read_map_yaml(dir / "a.yaml").origin.y(), meta.origin.y(), 1e-9);
 }
 
 TEST(PlainMap, GreyLevelsReadBackAsFreeAndOccupied) {
@@ -239,7 +240,7 @@ TEST(RouteJson, WriteReadRoundTrip) {
   EXPECT_EQ(j["goal"]["cell"], json::array({4, 2}));
 
   formats::write_safe_map(dir, safe, geo);
-  const formats::RosMap m = formats::read_ros_map(dir / "safe.yaml");
+  const formats::RosMap m = app::read_ros_map(dir / "safe.yaml");
   EXPECT_EQ(m.geometry, geo);
   EXPECT_EQ(m.cells.at(0, 0), Cell::kWall);
   EXPECT_EQ(m.cells.at(1, 0), Cell::kWall);
@@ -322,7 +323,7 @@ TEST_P(RosMapRefuses, WithTypedErrorNamingTheFile) {
   if (c.yaml != "<none>") test::write_text(dir / "map.yaml", c.yaml);
   if (c.image != "<none>") test::write_text(dir / "map.pgm", c.image);
   try {
-    formats::read_ros_map(dir / "map.yaml", 1'000'000);
+    app::read_ros_map(dir / "map.yaml", 1'000'000);
     FAIL() << "accepted";
   } catch (const BudgetError& e) {
     EXPECT_TRUE(c.budget) << e.what();

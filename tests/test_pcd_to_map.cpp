@@ -6,7 +6,7 @@
 
 #include "config.hpp"
 #include "indoormap/core/errors.hpp"
-#include "indoormap/formats/ros_map.hpp"
+#include "map_yaml.hpp"
 #include "test_support.hpp"
 
 using namespace indoormap;
@@ -71,7 +71,7 @@ TEST(PcdToMap, WritesEveryOutputInItsFormat) {
   for (const auto& e : fs::directory_iterator(out)) EXPECT_NE(e.path().filename().string()[0], '.');
 
   // The ROS map loads the way map_server reads it, and agrees with the layout classes.
-  formats::RosMap ros = formats::read_ros_map(out / "map.yaml");
+  formats::RosMap ros = app::read_ros_map(out / "map.yaml");
   const std::string pgm = test::read_text(out / "layout.pgm");
   ASSERT_EQ(pgm.substr(0, 3), "P5\n");
   const int w = ros.geometry.width(), h = ros.geometry.height();

@@ -1,9 +1,7 @@
 // map-eval: compares pcd-to-map / furniture-extract outputs with a scene-sim ground truth.
 // See docs/map-eval.md and docs/evaluation.md.
-#include <yaml-cpp/yaml.h>
 
 #include <CLI/CLI.hpp>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -20,6 +18,7 @@
 #include "indoormap/sim/eval.hpp"
 #include "indoormap/version.hpp"
 #include "main_guard.hpp"
+#include "map_yaml.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
@@ -34,23 +33,8 @@ void visit(sim::EvalParams& p, F&& f) {
   f("", "objects_include_hanging", p.include_hanging);
 }
 
-std::size_t yaml_line(const YAML::Node& n) {
-  return n.IsDefined() && n.Mark().line >= 0 ? n.Mark().line + 1 : 0;
-}
-
-double yaml_number(const YAML::Node& n, const fs::path& file, const std::string& key) {
-  if (!n.IsDefined() || !n.IsScalar())
-    throw InputError(file.string(), "key '" + key + "': missing or not a number", yaml_line(n));
-  try {
-    const double v = n.as<double>();
-    if (std::isfinite(v)) return v;
-  } catch (const YAML::Exception&) {
-  }
-  throw InputError(file.string(), "key '" + key + "': expected a finite number", yaml_line(n));
-}
-
 /// Grid geometry of a result layout: layout.yaml if present, else map.yaml (same grid), read by
-/// the one map.yaml reader (formats::read_map_yaml; the image it names is not opened).
+/// the one map.yaml reader (app::read_map_yaml; the image it names is not opened).
 GridGeometry result_geometry(const fs::path& dir, const Grid<std::uint8_t>& image,
                              std::string& source) {
   fs::path yaml = dir / "layout.yaml";
@@ -60,7 +44,7 @@ GridGeometry result_geometry(const fs::path& dir, const Grid<std::uint8_t>& imag
         (dir / "map.yaml").string(),
         "missing: layout.pgm needs map.yaml (or layout.yaml) for its resolution and origin");
   source = yaml.filename().string();
-  const formats::RosMapMeta meta = formats::read_map_yaml(yaml);
+  const formats::RosMapMeta meta = app::read_map_yaml(yaml);
   if (meta.origin.z() != 0.0)
     throw InputError(yaml.string(), "key 'origin': a rotated map (yaw != 0) is not supported");
   return GridGeometry({meta.origin.x(), meta.origin.y()}, meta.resolution_m, image.width,

@@ -3,13 +3,14 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "cli.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/formats/json.hpp"
-#include "indoormap/formats/ros_map.hpp"
 #include "indoormap/version.hpp"
+#include "map_yaml.hpp"
 #include "plan_config.hpp"
 #include "route_files.hpp"
 
@@ -23,7 +24,16 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-int run(int argc, char** argv) {
+/// The command line; exit_code is set when parsing ends the run (--help, a usage error).
+struct Args {
+  std::string map_path, start_s, goal_s, out_dir, config_file;
+  double resolution = 0.0;
+  int free_min = 250;
+  bool print_config = false;
+  std::optional<int> exit_code;
+};
+
+Args parse_args(int argc, char** argv) {
   CLI::App cli_app{
       "plan-route: plan a route of 'turn, then go straight' commands through the safe zone of a "
       "robot.\n"
@@ -40,60 +50,67 @@ int run(int argc, char** argv) {
       "Exit codes: 0 route found, 2 bad usage or bad input (e.g. start in the unsafe zone), 3 no "
       "route,\n"
       "1 other failure.");
-  std::string map_path, start_s, goal_s, out_dir, config_file;
-  double resolution = 0.0;
-  int free_min = 250;
-  bool print_config = false;
-  cli_app.add_option("--map", map_path,
+  Args a;
+  cli_app.add_option("--map", a.map_path,
                      "ROS map YAML (map_server format), or a plain PNG/PGM map with --resolution");
-  cli_app.add_option("--resolution", resolution, "Metres per pixel of a plain PNG/PGM map");
+  cli_app.add_option("--resolution", a.resolution, "Metres per pixel of a plain PNG/PGM map");
   cli_app
-      .add_option("--free-min", free_min, "Plain maps: grey levels >= this are free (default 250)")
+      .add_option("--free-min", a.free_min,
+                  "Plain maps: grey levels >= this are free (default 250)")
       ->check(CLI::Range(0, 255));
-  cli_app.add_option("--start", start_s,
+  cli_app.add_option("--start", a.start_s,
                      "Start X,Y[,DEG] in map metres (DEG: the robot's heading)");
-  cli_app.add_option("--goal", goal_s, "Goal X,Y[,DEG] in map metres (DEG: final heading)");
-  cli_app.add_option("-o,--out", out_dir, "Output directory (created if missing)");
-  cli_app.add_option("-c,--config", config_file,
+  cli_app.add_option("--goal", a.goal_s, "Goal X,Y[,DEG] in map metres (DEG: final heading)");
+  cli_app.add_option("-o,--out", a.out_dir, "Output directory (created if missing)");
+  cli_app.add_option("-c,--config", a.config_file,
                      "YAML robot and planner parameters (config/plan-route.yaml)");
-  cli_app.add_flag("--print-config", print_config,
+  cli_app.add_flag("--print-config", a.print_config,
                    "Print the effective parameters as YAML and exit");
   try {
     cli_app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return cli_app.exit(e) == 0 ? 0 : static_cast<int>(ExitCode::kBadInput);
+    a.exit_code = cli_app.exit(e) == 0 ? 0 : static_cast<int>(ExitCode::kBadInput);
   }
+  return a;
+}
+
+/// The map of --map: a map YAML, or a plain image with --resolution.
+formats::RosMap load_map(const Args& a) {
+  const fs::path mp = a.map_path;
+  const std::string ext = mp.extension().string();
+  if (ext == ".yaml" || ext == ".yml") {
+    if (a.resolution != 0.0)
+      throw UsageError("--resolution is for plain PNG/PGM maps; " + a.map_path + " is a map YAML");
+    return app::read_ros_map(mp);
+  }
+  if (!(a.resolution > 0))
+    throw UsageError("--map " + a.map_path +
+                     " is an image: give its --resolution in metres per pixel");
+  return formats::read_plain_map(mp, a.resolution, a.free_min);
+}
+
+int run(int argc, char** argv) {
+  const Args a = parse_args(argc, argv);
+  if (a.exit_code) return *a.exit_code;
   const auto t_start = std::chrono::steady_clock::now();
   app::PlanConfig cfg;
-  if (!config_file.empty()) app::merge_plan_config_file(cfg, config_file);
+  if (!a.config_file.empty()) app::merge_plan_config_file(cfg, a.config_file);
   app::validate(cfg);
-  if (print_config) {
+  if (a.print_config) {
     std::cout << app::to_yaml(cfg);
     return 0;
   }
-  if (map_path.empty()) throw UsageError("no map given: use --map map.yaml (see --help)");
-  if (start_s.empty() || goal_s.empty())
+  if (a.map_path.empty()) throw UsageError("no map given: use --map map.yaml (see --help)");
+  if (a.start_s.empty() || a.goal_s.empty())
     throw UsageError("both --start X,Y[,DEG] and --goal X,Y[,DEG] are needed");
-  if (out_dir.empty()) throw UsageError("no output directory given: use -o DIR");
-  const planning::Pose2 start = app::parse_pose(start_s, "--start");
-  const planning::Pose2 goal = app::parse_pose(goal_s, "--goal");
-  const fs::path out = out_dir;
+  if (a.out_dir.empty()) throw UsageError("no output directory given: use -o DIR");
+  const planning::Pose2 start = app::parse_pose(a.start_s, "--start");
+  const planning::Pose2 goal = app::parse_pose(a.goal_s, "--goal");
+  const fs::path out = a.out_dir;
   ensure_writable_dir(out);
 
   auto t0 = std::chrono::steady_clock::now();
-  const fs::path mp = map_path;
-  const std::string ext = mp.extension().string();
-  formats::RosMap map;
-  if (ext == ".yaml" || ext == ".yml") {
-    if (resolution != 0.0)
-      throw UsageError("--resolution is for plain PNG/PGM maps; " + map_path + " is a map YAML");
-    map = formats::read_ros_map(mp);
-  } else {
-    if (!(resolution > 0))
-      throw UsageError("--map " + map_path +
-                       " is an image: give its --resolution in metres per pixel");
-    map = formats::read_plain_map(mp, resolution, free_min);
-  }
+  const formats::RosMap map = load_map(a);
   const double load_ms = ms_since(t0);
 
   t0 = std::chrono::steady_clock::now();
@@ -116,7 +133,7 @@ int run(int argc, char** argv) {
   json summary = {
       {"program", "plan-route"},
       {"version", kVersion},
-      {"map", map_path},
+      {"map", a.map_path},
       {"grid",
        {{"width", map.geometry.width()},
         {"height", map.geometry.height()},

@@ -5,7 +5,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
@@ -21,7 +25,18 @@ using namespace indoormap;
 
 namespace {
 
-int run(int argc, char** argv) {
+/// The command line; exit_code is set when parsing ends the run (--help, a usage error).
+struct Args {
+  std::string scene_file, out_dir, config_file;
+  bool random = false, print_config = false, tdtk = false, quiet = false;
+  std::uint64_t seed = 1;
+  bool seed_given = false;
+  int rooms = 0;
+  double sector_deg = -1, step_deg = 0, truth_cell = 0;
+  std::optional<int> exit_code;
+};
+
+Args parse_args(int argc, char** argv) {
   CLI::App app{
       "scene-sim: simulates a terrestrial laser scanner (Riegl VZ-400 like) in a furnished indoor "
       "scene "
@@ -34,117 +49,69 @@ int run(int argc, char** argv) {
       "Outputs in DIR: cloud.pcd, ground_truth.json, ground_truth_layout.{pgm,png,yaml}, "
       "summary.json,\n"
       "and with --3dtk a 3dtk/ scan directory. Exit codes: 0 done, 2 bad usage or input, 1 other.");
-  std::string scene_file, out_dir, config_file;
-  bool random = false, print_config = false, tdtk = false, quiet = false;
-  std::uint64_t seed = 1;
-  int rooms = 0;
-  double sector_deg = -1, step_deg = 0, truth_cell = 0;
-  app.add_option("scene", scene_file, "Scene description (YAML, see docs/scene-sim.md)");
-  app.add_flag("--random", random, "Generate a plausible random scene instead of reading one");
-  auto* seed_opt = app.add_option("--seed", seed,
+  Args a;
+  app.add_option("scene", a.scene_file, "Scene description (YAML, see docs/scene-sim.md)");
+  app.add_flag("--random", a.random, "Generate a plausible random scene instead of reading one");
+  auto* seed_opt = app.add_option("--seed", a.seed,
                                   "Seed of the random scene and of the noise (default 1; for a "
                                   "scene file it overrides the file's seed)");
-  app.add_option("--rooms", rooms, "Random scene: number of furnished rooms (default 1)")
+  app.add_option("--rooms", a.rooms, "Random scene: number of furnished rooms (default 1)")
       ->check(CLI::Range(1, 200));
-  app.add_option("-o,--out", out_dir, "Output directory (created if needed)");
-  app.add_option("-c,--config", config_file,
+  app.add_option("-o,--out", a.out_dir, "Output directory (created if needed)");
+  app.add_option("-c,--config", a.config_file,
                  "Config file (YAML; keys scanner, output, random; see config/scene-sim.yaml)");
-  app.add_flag("--3dtk", tdtk, "Also write a 3DTK scan directory DIR/3dtk (scanNNN.3d + .pose)");
-  app.add_option("--sector-deg", sector_deg,
+  app.add_flag("--3dtk", a.tdtk, "Also write a 3DTK scan directory DIR/3dtk (scanNNN.3d + .pose)");
+  app.add_option("--sector-deg", a.sector_deg,
                  "Split every position into scans of this many degrees (3DTK; 0: whole turn)")
       ->check(CLI::Range(0.0, 360.0));
-  app.add_option("--step-deg", step_deg, "Angular step, azimuth and elevation (degrees)")
+  app.add_option("--step-deg", a.step_deg, "Angular step, azimuth and elevation (degrees)")
       ->check(CLI::Range(0.005, 10.0));
-  app.add_option("--truth-cell", truth_cell,
+  app.add_option("--truth-cell", a.truth_cell,
                  "Cell of the ground-truth layout (metres, default 0.05)")
       ->check(CLI::Range(0.001, 10.0));
-  app.add_flag("--print-config", print_config, "Print the effective parameters as YAML and exit");
-  app.add_flag("-q,--quiet", quiet, "No progress messages");
+  app.add_flag("--print-config", a.print_config, "Print the effective parameters as YAML and exit");
+  app.add_flag("-q,--quiet", a.quiet, "No progress messages");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : static_cast<int>(ExitCode::kBadInput);
+    a.exit_code = app.exit(e) == 0 ? 0 : static_cast<int>(ExitCode::kBadInput);
   }
+  a.seed_given = seed_opt->count() > 0;
+  return a;
+}
 
-  scene_sim::Config config;
-  if (!config_file.empty()) scene_sim::apply_config_file(config_file, config);
-  if (rooms > 0) config.random.rooms = rooms;
-  if (tdtk) config.output.write_3dtk = true;
-  if (sector_deg >= 0) config.sector_deg = sector_deg;
-  if (truth_cell > 0) config.output.truth_cell_m = truth_cell;
-
-  if (random == !scene_file.empty())
-    throw UsageError("give either a scene file or --random (see --help)");
-  if (!random && rooms > 0) throw UsageError("--rooms applies to --random only");
-
-  sim::Scene scene;
-  std::map<std::string, std::size_t> key_lines;
-  if (random) {
-    scene = sim::random_scene(seed, config.random);
-    scene.scanner = config.scanner;
-  } else {
-    auto parsed = scene_sim::parse_scene_file(scene_file, config.scanner);
-    scene = std::move(parsed.scene);
-    key_lines = std::move(parsed.key_lines);
-    if (seed_opt->count() > 0) scene.seed = seed;
-  }
-  if (step_deg > 0) scene.scanner.azimuth_step_deg = scene.scanner.elevation_step_deg = step_deg;
-  config.scanner = scene.scanner;
-
-  if (print_config) {
-    std::cout << scene_sim::config_to_yaml(config);
-    return 0;
-  }
-  if (out_dir.empty()) throw UsageError("--out DIR is required (see --help)");
-
-  // Semantic checks with the YAML line of the offending key.
-  if (const auto problems = sim::check_scene(scene); !problems.empty()) {
-    const auto& p = problems.front();
-    std::string key = p.key;
-    std::size_t line = 0;
-    while (!key.empty()) {
-      if (auto it = key_lines.find(key); it != key_lines.end()) {
-        line = it->second;
-        break;
-      }
-      const auto cut = key.find_last_of(".[");
-      key = cut == std::string::npos ? "" : key.substr(0, cut);
+/// Semantic checks of the scene: the first problem as InputError(file, key, YAML line of the
+/// offending key or its closest parent in key_lines).
+void check_scene_or_throw(const sim::Scene& scene,
+                          const std::map<std::string, std::size_t>& key_lines,
+                          const std::string& file) {
+  const auto problems = sim::check_scene(scene);
+  if (problems.empty()) return;
+  const auto& p = problems.front();
+  std::string key = p.key;
+  std::size_t line = 0;
+  while (!key.empty()) {
+    if (auto it = key_lines.find(key); it != key_lines.end()) {
+      line = it->second;
+      break;
     }
-    const std::string file =
-        random ? "<random scene, seed " + std::to_string(seed) + ">" : scene_file;
-    throw InputError(file, "key '" + p.key + "': " + p.problem, line);
+    const auto cut = key.find_last_of(".[");
+    key = cut == std::string::npos ? "" : key.substr(0, cut);
   }
+  throw InputError(file, "key '" + p.key + "': " + p.problem, line);
+}
 
-  ensure_writable_dir(out_dir);
-  const auto t0 = std::chrono::steady_clock::now();
-  sim::SimOptions sim_options;
-  sim_options.sector_deg = config.sector_deg;
-  if (!quiet)
-    std::fprintf(
-        stderr,
-        "scene-sim: %s: %zu room(s), %zu furniture item(s), %zu scanner position(s), %llu rays\n",
-        scene.name.c_str(), scene.rooms.size(), scene.furniture.size(), scene.scanners.size(),
-        static_cast<unsigned long long>(sim::ray_count(scene)));
-  const sim::SimResult result = sim::simulate(scene, sim_options);
-  const auto t1 = std::chrono::steady_clock::now();
-  if (result.points.empty()) {
-    std::fprintf(stderr,
-                 "scene-sim: no point was returned (every ray missed or was out of range)\n");
-    return static_cast<int>(ExitCode::kNoResult);
-  }
-  sim::OutputOptions out_options = config.output;
-  const auto written = scene_sim::write_scene_outputs(out_dir, scene, result, out_options);
-  const auto t2 = std::chrono::steady_clock::now();
-
-  const double sim_s = std::chrono::duration<double>(t1 - t0).count();
-  const double write_s = std::chrono::duration<double>(t2 - t1).count();
+/// summary.json: what was simulated, with which parameters, and how long it took.
+nlohmann::ordered_json summary_json(const Args& a, const scene_sim::Config& config,
+                                    const sim::Scene& scene, const sim::SimResult& result,
+                                    const std::vector<std::string>& files, double sim_s,
+                                    double write_s) {
   nlohmann::ordered_json summary;
   summary["app"] = "scene-sim";
   summary["version"] = kVersion;
-  summary["scene"] = random ? "random" : scene_file;
+  summary["scene"] = a.random ? "random" : a.scene_file;
   summary["seed"] = scene.seed;
-  if (random) summary["rooms"] = config.random.rooms;
+  if (a.random) summary["rooms"] = config.random.rooms;
   summary["points"] = result.points.size();
   summary["rays"] = result.rays;
   summary["mixed_pixels"] = result.mixed_pixels;
@@ -163,14 +130,81 @@ int run(int argc, char** argv) {
   summary["parameters"]["output"] = {{"truth_cell_m", config.output.truth_cell_m},
                                      {"3dtk", config.output.write_3dtk},
                                      {"sector_deg", config.sector_deg}};
-  summary["outputs"] = written.files;
+  summary["outputs"] = files;
   summary["timings_s"] = {{"simulate", sim_s}, {"write", write_s}};
   summary["points_per_second"] = sim_s > 0 ? result.points.size() / sim_s : 0.0;
-  write_file_atomic(fs::path(out_dir) / "summary.json", summary.dump(2) + "\n");
-  if (!quiet)
+  return summary;
+}
+
+int run(int argc, char** argv) {
+  const Args a = parse_args(argc, argv);
+  if (a.exit_code) return *a.exit_code;
+  scene_sim::Config config;
+  if (!a.config_file.empty()) scene_sim::apply_config_file(a.config_file, config);
+  if (a.rooms > 0) config.random.rooms = a.rooms;
+  if (a.tdtk) config.output.write_3dtk = true;
+  if (a.sector_deg >= 0) config.sector_deg = a.sector_deg;
+  if (a.truth_cell > 0) config.output.truth_cell_m = a.truth_cell;
+
+  if (a.random == !a.scene_file.empty())
+    throw UsageError("give either a scene file or --random (see --help)");
+  if (!a.random && a.rooms > 0) throw UsageError("--rooms applies to --random only");
+
+  sim::Scene scene;
+  std::map<std::string, std::size_t> key_lines;
+  if (a.random) {
+    scene = sim::random_scene(a.seed, config.random);
+    scene.scanner = config.scanner;
+  } else {
+    auto parsed = scene_sim::parse_scene_file(a.scene_file, config.scanner);
+    scene = std::move(parsed.scene);
+    key_lines = std::move(parsed.key_lines);
+    if (a.seed_given) scene.seed = a.seed;
+  }
+  if (a.step_deg > 0)
+    scene.scanner.azimuth_step_deg = scene.scanner.elevation_step_deg = a.step_deg;
+  config.scanner = scene.scanner;
+
+  if (a.print_config) {
+    std::cout << scene_sim::config_to_yaml(config);
+    return 0;
+  }
+  if (a.out_dir.empty()) throw UsageError("--out DIR is required (see --help)");
+
+  check_scene_or_throw(
+      scene, key_lines,
+      a.random ? "<random scene, seed " + std::to_string(a.seed) + ">" : a.scene_file);
+
+  ensure_writable_dir(a.out_dir);
+  const auto t0 = std::chrono::steady_clock::now();
+  sim::SimOptions sim_options;
+  sim_options.sector_deg = config.sector_deg;
+  if (!a.quiet)
+    std::fprintf(
+        stderr,
+        "scene-sim: %s: %zu room(s), %zu furniture item(s), %zu scanner position(s), %llu rays\n",
+        scene.name.c_str(), scene.rooms.size(), scene.furniture.size(), scene.scanners.size(),
+        static_cast<unsigned long long>(sim::ray_count(scene)));
+  const sim::SimResult result = sim::simulate(scene, sim_options);
+  const auto t1 = std::chrono::steady_clock::now();
+  if (result.points.empty()) {
+    std::fprintf(stderr,
+                 "scene-sim: no point was returned (every ray missed or was out of range)\n");
+    return static_cast<int>(ExitCode::kNoResult);
+  }
+  sim::OutputOptions out_options = config.output;
+  const auto written = scene_sim::write_scene_outputs(a.out_dir, scene, result, out_options);
+  const auto t2 = std::chrono::steady_clock::now();
+
+  const double sim_s = std::chrono::duration<double>(t1 - t0).count();
+  const double write_s = std::chrono::duration<double>(t2 - t1).count();
+  const nlohmann::ordered_json summary =
+      summary_json(a, config, scene, result, written.files, sim_s, write_s);
+  write_file_atomic(fs::path(a.out_dir) / "summary.json", summary.dump(2) + "\n");
+  if (!a.quiet)
     std::fprintf(stderr, "scene-sim: %zu points (%.1f M points/s), outputs in %s\n",
                  result.points.size(), sim_s > 0 ? result.points.size() / sim_s / 1e6 : 0.0,
-                 out_dir.c_str());
+                 a.out_dir.c_str());
   return 0;
 }
 

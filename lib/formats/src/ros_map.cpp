@@ -1,13 +1,10 @@
 #include "indoormap/formats/ros_map.hpp"
 
-#include <yaml-cpp/yaml.h>
-
 #include <charconv>
 #include <cmath>
 #include <fstream>
 #include <limits>
 #include <opencv2/imgcodecs.hpp>
-#include <optional>
 #include <sstream>
 
 #include "indoormap/core/atomic_file.hpp"
@@ -142,21 +139,6 @@ std::pair<std::int64_t, std::int64_t> image_size(const fs::path& path) {
   throw InputError(path.string(), "map image is neither PGM (P5/P2) nor PNG");
 }
 
-double number_at(const YAML::Node& root, const char* key, const fs::path& file,
-                 std::optional<double> fallback) {
-  const YAML::Node n = root[key];
-  if (!n) {
-    if (fallback) return *fallback;
-    throw InputError(file.string(), std::string("missing key '") + key + "'");
-  }
-  try {
-    return n.as<double>();
-  } catch (const YAML::Exception&) {
-    throw InputError(file.string(), std::string("key '") + key + "' is not a number",
-                     static_cast<std::size_t>(n.Mark().line + 1));
-  }
-}
-
 // The map image decoded as 8-bit grey, its size checked against max_cells from the header before
 // decoding. PNG sizes are 32-bit: each is checked before any product (w * h can overflow int64).
 cv::Mat decode_gray(const fs::path& image, std::int64_t max_cells) {
@@ -179,53 +161,9 @@ cv::Mat decode_gray(const fs::path& image, std::int64_t max_cells) {
 
 }  // namespace
 
-RosMapMeta read_map_yaml(const fs::path& yaml_path) {
-  YAML::Node root;
-  try {
-    std::ifstream in(yaml_path);
-    if (!in) throw InputError(yaml_path.string(), "cannot open the map YAML");
-    root = YAML::Load(in);
-  } catch (const YAML::Exception& e) {
-    throw InputError(yaml_path.string(), "invalid YAML: " + e.msg,
-                     static_cast<std::size_t>(e.mark.line + 1));
-  }
-  if (!root.IsMap()) throw InputError(yaml_path.string(), "the map YAML is not a mapping");
-  RosMap m;  // the keys go to m.meta
-  if (!root["image"] || !root["image"].IsScalar())
-    throw InputError(yaml_path.string(), "missing key 'image'");
-  m.meta.image = root["image"].as<std::string>();
-  m.meta.resolution_m = number_at(root, "resolution", yaml_path, std::nullopt);
-  if (!(m.meta.resolution_m > 0.0) || !std::isfinite(m.meta.resolution_m))
-    throw InputError(yaml_path.string(), "key 'resolution' must be a positive number");
-  const YAML::Node origin = root["origin"];
-  if (!origin || !origin.IsSequence() || origin.size() != 3)
-    throw InputError(yaml_path.string(), "key 'origin' must be a list [x, y, yaw]");
-  for (int i = 0; i < 3; ++i) {
-    try {
-      m.meta.origin[i] = origin[i].as<double>();
-    } catch (const YAML::Exception&) {
-      throw InputError(yaml_path.string(), "key 'origin' must hold three numbers");
-    }
-  }
-  if (!m.meta.origin.allFinite())
-    throw InputError(yaml_path.string(), "key 'origin' is not finite");
-  const double negate = number_at(root, "negate", yaml_path, 0.0);
-  if (negate != 0.0 && negate != 1.0)
-    throw InputError(yaml_path.string(), "key 'negate' must be 0 or 1");
-  m.meta.negate = static_cast<int>(negate);
-  m.meta.occupied_thresh = number_at(root, "occupied_thresh", yaml_path, 0.65);
-  m.meta.free_thresh = number_at(root, "free_thresh", yaml_path, 0.196);
-  if (!(m.meta.free_thresh >= 0.0 && m.meta.free_thresh <= m.meta.occupied_thresh &&
-        m.meta.occupied_thresh <= 1.0))
-    throw InputError(yaml_path.string(),
-                     "keys 'free_thresh' <= 'occupied_thresh' must be numbers in [0, 1]");
-
-  return m.meta;
-}
-
-RosMap read_ros_map(const fs::path& yaml_path, std::int64_t max_cells) {
+RosMap decode_ros_map(const RosMapMeta& meta, const fs::path& yaml_path, std::int64_t max_cells) {
   RosMap m;
-  m.meta = read_map_yaml(yaml_path);
+  m.meta = meta;
   fs::path image = m.meta.image;
   if (image.is_relative()) image = yaml_path.parent_path() / image;
   std::error_code ec;

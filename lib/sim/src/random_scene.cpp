@@ -128,7 +128,8 @@ void furnish_room(Rng& rng, Planner& plan, const Room& room, double x0, double y
   // Desks with chairs along the north wall(s): walk along y = y0 + d (or the L's lower top).
   const int ndesk = rng.uniform_int(1, 3);
   for (int k = 0; k < ndesk; ++k) {
-    const V2 size(rng.uniform(1.2, 1.8), rng.uniform(0.7, 0.8));
+    const double size_y = rng.uniform(0.7, 0.8);
+    const V2 size(rng.uniform(1.2, 1.8), size_y);
     for (int attempt = 0; attempt < 20; ++attempt) {
       const double x = rng.uniform(x0 + size.x() / 2 + 0.05, x0 + w - size.x() / 2 - 0.05);
       // The top y at this x: the polygon's highest interior y (probe downwards).
@@ -164,10 +165,12 @@ void furnish_room(Rng& rng, Planner& plan, const Room& room, double x0, double y
   // A table in the middle, with chairs.
   if (rng.uniform() < 0.7) {
     const bool round = rng.uniform() < 0.3;
-    const V2 size = round ? V2::Constant(2 * rng.uniform(0.45, 0.65))
-                          : V2(rng.uniform(1.4, 2.4), rng.uniform(0.8, 1.1));
+    const double size_y = round ? 0.0 : rng.uniform(0.8, 1.1);
+    const V2 size =
+        round ? V2::Constant(2 * rng.uniform(0.45, 0.65)) : V2(rng.uniform(1.4, 2.4), size_y);
     for (int attempt = 0; attempt < 30; ++attempt) {
-      const V2 c(rng.uniform(x0 + 1.2, x0 + w - 1.2), rng.uniform(y0 + 1.2, y0 + d - 1.2));
+      const double cy = rng.uniform(y0 + 1.2, y0 + d - 1.2);
+      const V2 c(rng.uniform(x0 + 1.2, x0 + w - 1.2), cy);
       if (!plan.place(c, size + V2(1.0, 1.0))) continue;
       if (round) {
         F.push_back(round_item(FurnitureType::kTable, c, size.x() / 2, rng.uniform(0.72, 0.76)));
@@ -191,8 +194,8 @@ void furnish_room(Rng& rng, Planner& plan, const Room& room, double x0, double y
   for (int k = 0; k < nbin; ++k) {
     const double r = rng.uniform(0.12, 0.2);
     for (int attempt = 0; attempt < 30; ++attempt) {
-      const V2 c(rng.uniform(x0 + r + 0.05, x0 + w - r - 0.05),
-                 rng.uniform(y0 + r + 0.05, y0 + d - r - 0.05));
+      const double cy = rng.uniform(y0 + r + 0.05, y0 + d - r - 0.05);
+      const V2 c(rng.uniform(x0 + r + 0.05, x0 + w - r - 0.05), cy);
       if (!plan.place(c, V2::Constant(2 * r))) continue;
       F.push_back(round_item(FurnitureType::kBin, c, r, rng.uniform(0.3, 0.5)));
       break;
@@ -201,7 +204,8 @@ void furnish_room(Rng& rng, Planner& plan, const Room& room, double x0, double y
   if (rng.uniform() < 0.15) {
     const double r = rng.uniform(0.15, 0.3);
     for (int attempt = 0; attempt < 30; ++attempt) {
-      const V2 c(rng.uniform(x0 + 1, x0 + w - 1), rng.uniform(y0 + 1, y0 + d - 1));
+      const double cy = rng.uniform(y0 + 1, y0 + d - 1);
+      const V2 c(rng.uniform(x0 + 1, x0 + w - 1), cy);
       if (!plan.place(c, V2::Constant(2 * r))) continue;
       F.push_back(round_item(FurnitureType::kPillar, c, r));
       break;
@@ -236,8 +240,11 @@ LocalRoom make_room(Rng& rng, const RandomSceneParams& p, int index, double x0, 
   const V2 door_c(x0 + door.at_m, y0 + 0.6);
   plan.taken.emplace_back(door_c - V2(door.width_m / 2 + 0.2, 0.8),
                           door_c + V2(door.width_m / 2 + 0.2, 0.8));
-  V2 scanner_xy(x0 + w * rng.uniform(0.4, 0.6),
-                y0 + (l_shape ? 0.5 : 1.0) * d * rng.uniform(0.4, 0.6));
+  // Two draws in the arguments of one call have no fixed order in C++ (gcc draws the last
+  // argument first, clang the first): here and in furnish_room the later one is drawn
+  // beforehand, as gcc did, so a seed gives the same scene with every compiler.
+  const double scanner_v = rng.uniform(0.4, 0.6);
+  V2 scanner_xy(x0 + w * rng.uniform(0.4, 0.6), y0 + (l_shape ? 0.5 : 1.0) * d * scanner_v);
   plan.taken.emplace_back(scanner_xy.array() - 0.45, scanner_xy.array() + 0.45);
   ScannerPose sp;
   sp.position_m = Eigen::Vector3d(scanner_xy.x(), scanner_xy.y(), rng.uniform(1.2, 1.5));

@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "fuzz_target.hpp"
-#include "indoormap/formats/ros_map.hpp"
+#include "map_yaml.hpp"
 
 INDOORMAP_FUZZ_TARGET(ros_map) {
   using namespace indoormap::fuzz;
@@ -14,7 +14,7 @@ INDOORMAP_FUZZ_TARGET(ros_map) {
     write_file(dir, "map.pgm", parts[1]);
     write_file(dir, "map.png", parts[1]);
   }
-  const indoormap::formats::RosMap m = indoormap::formats::read_ros_map(yaml, kMaxCells);
+  const indoormap::formats::RosMap m = indoormap::app::read_ros_map(yaml, kMaxCells);
   if (m.cells.width != m.geometry.width() || m.cells.height != m.geometry.height() ||
       m.cells.size() == 0 || static_cast<std::int64_t>(m.cells.size()) > kMaxCells)
     throw std::logic_error("map size inconsistent with its geometry or budget");

@@ -46,19 +46,18 @@ RosMapMeta map_meta(const std::string& image, const GridGeometry& geometry);
 void write_ros_map(const std::filesystem::path& dir, const std::string& stem,
                    const Grid<Cell>& layout, const GridGeometry& geometry);
 
-/// Reads the keys of a map_server YAML (the image is not opened). Throws InputError naming the
-/// file and the key on malformed input.
-RosMapMeta read_map_yaml(const std::filesystem::path& yaml_path);
-
 /// A ROS map as map_server reads it: occupancy from the grey levels and the YAML thresholds.
 struct RosMap {
   RosMapMeta meta;
   GridGeometry geometry;
   Grid<Cell> cells;  ///< kWall for occupied, kFree, kUnknown
 };
-/// Reads map.yaml and the image it names (PGM or PNG, relative to the YAML). Throws InputError
-/// naming the file and key on malformed input. max_cells bounds the image size.
-RosMap read_ros_map(const std::filesystem::path& yaml_path, std::int64_t max_cells = 100'000'000);
+/// Decodes the image a map YAML names (PGM or PNG; a relative meta.image is relative to the
+/// directory of yaml_path) into occupancy by meta's thresholds. The YAML itself is read in apps/
+/// (app::read_map_yaml / app::read_ros_map in apps/common/map_yaml.hpp): YAML is read only
+/// there. Throws InputError naming the image; BudgetError when it exceeds max_cells.
+RosMap decode_ros_map(const RosMapMeta& meta, const std::filesystem::path& yaml_path,
+                      std::int64_t max_cells = 100'000'000);
 
 /// Reads a plain building-map image (PNG / PGM, e.g. the room-segmentation maps): grey level
 /// >= free_min is free, anything darker occupied (kWall). North up; origin (0, 0) at the
