@@ -5,31 +5,18 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
-#include <cstdlib>
-#include <filesystem>
 #include <opencv2/imgproc.hpp>
 #include <optional>
 
 #include "indoormap/border/border.hpp"
-#include "indoormap/cloud_io/load.hpp"
 #include "indoormap/layout/pipeline.hpp"
+#include "jacobs_fixtures.hpp"
 
 using namespace indoormap;
 
 namespace {
 
-const layout::MapResult* jacobs() {
-  static std::optional<layout::MapResult> m = []() -> std::optional<layout::MapResult> {
-    std::filesystem::path dir =
-        std::filesystem::path(INDOORMAP_SOURCE_DIR) / ".." / "shared" / "data";
-    if (const char* env = std::getenv("INDOORMAP_DATA"); env && *env) dir = env;
-    dir /= "jacobs-thermocolorlab";
-    if (!std::filesystem::exists(dir)) return std::nullopt;
-    auto loaded = cloud_io::load_clouds({dir.string()}, {});
-    return layout::make_map(std::move(loaded.cloud), {});
-  }();
-  return m ? &*m : nullptr;
-}
+using bench::jacobs;
 
 // The Jacobs room's ring component (the room border), found once.
 struct JacobsStages {

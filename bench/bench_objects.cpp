@@ -7,33 +7,20 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
-#include <cstdlib>
-#include <filesystem>
 #include <opencv2/imgproc.hpp>
 #include <optional>
 #include <random>
 
-#include "indoormap/cloud_io/load.hpp"
 #include "indoormap/layout/pipeline.hpp"
 #include "indoormap/objects/label.hpp"
 #include "indoormap/objects/objects.hpp"
+#include "jacobs_fixtures.hpp"
 
 using namespace indoormap;
 
 namespace {
 
-const layout::MapResult* jacobs() {
-  static std::optional<layout::MapResult> m = []() -> std::optional<layout::MapResult> {
-    std::filesystem::path dir =
-        std::filesystem::path(INDOORMAP_SOURCE_DIR) / ".." / "shared" / "data";
-    if (const char* env = std::getenv("INDOORMAP_DATA"); env && *env) dir = env;
-    dir /= "jacobs-thermocolorlab";
-    if (!std::filesystem::exists(dir)) return std::nullopt;
-    auto loaded = cloud_io::load_cloud(dir.string());
-    return layout::make_map(std::move(loaded.cloud), {});
-  }();
-  return m ? &*m : nullptr;
-}
+using bench::jacobs;
 
 // Furniture mask of the Jacobs room layout M_r (1 = furniture).
 const Grid<std::uint8_t>* jacobs_mask() {

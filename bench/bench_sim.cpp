@@ -14,31 +14,34 @@ using namespace indoormap::sim;
 
 namespace {
 
-Scene office_like() {
+/// A random scene of `rooms` furnished rooms, scanned every `step_deg` in azimuth and elevation.
+Scene furnished_rooms(std::uint64_t seed, int rooms, double step_deg) {
   RandomSceneParams p;
-  p.rooms = 1;
-  Scene s = random_scene(1, p);
-  s.scanner.azimuth_step_deg = s.scanner.elevation_step_deg = 0.25;
+  p.rooms = rooms;
+  Scene s = random_scene(seed, p);
+  s.scanner.azimuth_step_deg = s.scanner.elevation_step_deg = step_deg;
   return s;
+}
+
+Scene office_like() {
+  return furnished_rooms(1, 1, 0.25);
 }
 
 /// 12 furnished rooms along a corridor, 13 scanner positions, about 20 M points.
 Scene building() {
-  RandomSceneParams p;
-  p.rooms = 12;
-  Scene s = random_scene(3, p);
-  s.scanner.azimuth_step_deg = s.scanner.elevation_step_deg = 0.155;
-  return s;
+  return furnished_rooms(3, 12, 0.155);
 }
 
 void report(benchmark::State& state, std::uint64_t points, std::uint64_t rays) {
   state.counters["points"] = static_cast<double>(points);
-  state.counters["points_per_s"] = benchmark::Counter(static_cast<double>(points) * state.iterations(), benchmark::Counter::kIsRate);
-  state.counters["rays_per_s"] = benchmark::Counter(static_cast<double>(rays) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["points_per_s"] = benchmark::Counter(
+      static_cast<double>(points) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["rays_per_s"] = benchmark::Counter(static_cast<double>(rays) * state.iterations(),
+                                                    benchmark::Counter::kIsRate);
 }
 
-void BM_SimulateOffice(benchmark::State& state) {
-  const Scene s = office_like();
+/// The whole simulation of one scene, per iteration.
+void simulate_scene(benchmark::State& state, const Scene& s) {
   std::uint64_t points = 0, rays = 0;
   for (auto _ : state) {
     const SimResult r = simulate(s);
@@ -47,19 +50,15 @@ void BM_SimulateOffice(benchmark::State& state) {
     benchmark::DoNotOptimize(r.points.data());
   }
   report(state, points, rays);
+}
+
+void BM_SimulateOffice(benchmark::State& state) {
+  simulate_scene(state, office_like());
 }
 BENCHMARK(BM_SimulateOffice)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
 void BM_SimulateBuilding20M(benchmark::State& state) {
-  const Scene s = building();
-  std::uint64_t points = 0, rays = 0;
-  for (auto _ : state) {
-    const SimResult r = simulate(s);
-    points = r.points.size();
-    rays = r.rays;
-    benchmark::DoNotOptimize(r.points.data());
-  }
-  report(state, points, rays);
+  simulate_scene(state, building());
 }
 BENCHMARK(BM_SimulateBuilding20M)->Unit(benchmark::kSecond)->Iterations(1);
 
@@ -75,18 +74,24 @@ void cast_rays(benchmark::State& state, double cell_m) {
       const double az = i * 0.5 * std::numbers::pi / 180;
       for (int j = 0; j < 100; ++j) {
         const double el = (-40 + j) * std::numbers::pi / 180;
-        const Eigen::Vector3d d(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
+        const Eigen::Vector3d d(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az),
+                                std::sin(el));
         hits += rc.cast(o, d, 100.0).has_value();
         ++rays;
       }
     }
   }
-  state.counters["rays_per_s"] = benchmark::Counter(static_cast<double>(rays), benchmark::Counter::kIsRate);
+  state.counters["rays_per_s"] =
+      benchmark::Counter(static_cast<double>(rays), benchmark::Counter::kIsRate);
   state.counters["primitives"] = static_cast<double>(g.solids.size() + g.caps.size());
   benchmark::DoNotOptimize(hits);
 }
-void BM_CastRaysGrid(benchmark::State& state) { cast_rays(state, 0.5); }
-void BM_CastRaysSingleCellReference(benchmark::State& state) { cast_rays(state, 1e6); }
+void BM_CastRaysGrid(benchmark::State& state) {
+  cast_rays(state, 0.5);
+}
+void BM_CastRaysSingleCellReference(benchmark::State& state) {
+  cast_rays(state, 1e6);
+}
 BENCHMARK(BM_CastRaysGrid)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CastRaysSingleCellReference)->Unit(benchmark::kMillisecond);
 

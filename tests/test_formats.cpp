@@ -19,10 +19,13 @@
 #include "indoormap/sim/ground_truth.hpp"
 #include "indoormap/sim/simulate.hpp"
 #include "indoormap/sim/world.hpp"
+#include "map_fixtures.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
+using map_fixtures::kPgm;
+using map_fixtures::png_header;
 using nlohmann::json;
 
 namespace {
@@ -341,13 +344,6 @@ namespace {
 const std::string kYaml =
     "image: map.pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\nnegate: 0\noccupied_thresh: 0.65\n"
     "free_thresh: 0.196\n";
-const std::string kPgm = "P5\n2 2\n255\n" + std::string("\0\xfe\xcd\0", 4);
-std::string png_header(std::uint32_t w, std::uint32_t h) {
-  std::string s("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16);
-  for (std::uint32_t v : {w, h})
-    for (int sh = 24; sh >= 0; sh -= 8) s += static_cast<char>((v >> sh) & 0xff);
-  return s + std::string("\x08\0\0\0\0", 5) + std::string(8, '\0');
-}
 }  // namespace
 
 INSTANTIATE_TEST_SUITE_P(

@@ -12,15 +12,6 @@
 #include "load_fixtures.hpp"
 #include "test_support.hpp"
 
-namespace fs = std::filesystem;
-using indoormap::BudgetError;
-using indoormap::InputError;
-using indoormap::cloud_io::load_cloud;
-using indoormap::cloud_io::load_clouds;
-using indoormap::cloud_io::LoadOptions;
-using indoormap::cloud_io::UpAxis;
-using indoormap::test::scratch_dir;
-using indoormap::test::write_text;
 using namespace load_fixtures;
 
 // ---------------------------------------------------------------------------------------- PCD

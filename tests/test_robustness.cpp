@@ -8,10 +8,13 @@
 
 #include "indoormap/cloud_io/load.hpp"
 #include "indoormap/core/errors.hpp"
+#include "map_fixtures.hpp"
 #include "test_support.hpp"
 
 using namespace indoormap;
 namespace fs = std::filesystem;
+using map_fixtures::kPgm;
+using map_fixtures::png_header;
 
 namespace {
 
@@ -335,17 +338,6 @@ TEST(LoaderRefuses, PlyEmptyElementWithHugeCountIsSkippedNotLooped) {
   const auto r = cloud_io::load_cloud((dir / "e.ply").string());
   ASSERT_EQ(r.cloud.points.size(), 1u);
 }
-
-// Map files for the app rows (the ROS map reader's own rows are in test_formats.cpp).
-namespace {
-const std::string kPgm = "P5\n2 2\n255\n" + std::string("\0\xfe\xcd\0", 4);
-std::string png_header(std::uint32_t w, std::uint32_t h) {
-  std::string s("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16);
-  for (std::uint32_t v : {w, h})
-    for (int sh = 24; sh >= 0; sh -= 8) s += static_cast<char>((v >> sh) & 0xff);
-  return s + std::string("\x08\0\0\0\0", 5) + std::string(8, '\0');
-}
-}  // namespace
 
 // ------------------------------------------------------------------------------ plan-route,
 // map-eval Rows found writing the plain_map, plan_config and layout_pgm fuzz targets: each app run

@@ -37,6 +37,20 @@ struct ReadInfo {
 /// linear; `n` must already be checked against the budget.
 void reserve_more(std::vector<Eigen::Vector3f>& out, std::uint64_t n);
 
+/// The words of a line (PCD and PLY headers, ascii PCD data), split at spaces and tabs; empty
+/// words are skipped. Inline: the ascii PCD reader calls it once per data line.
+inline std::vector<std::string_view> split_ws(std::string_view s) {
+  std::vector<std::string_view> out;
+  std::size_t i = 0;
+  while (i < s.size()) {
+    while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
+    const std::size_t b = i;
+    while (i < s.size() && s[i] != ' ' && s[i] != '\t') ++i;
+    if (i > b) out.push_back(s.substr(b, i - b));
+  }
+  return out;
+}
+
 /// Size of a regular, readable file; throws InputError (missing, directory, unreadable).
 std::uint64_t checked_file_size(const std::string& file);
 

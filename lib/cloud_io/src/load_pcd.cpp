@@ -24,18 +24,6 @@ namespace {
 
 constexpr std::uint64_t kMaxHeaderBytes = std::uint64_t{1} << 20;
 
-std::vector<std::string_view> split_ws(std::string_view s) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < s.size()) {
-    while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
-    const std::size_t b = i;
-    while (i < s.size() && s[i] != ' ' && s[i] != '\t') ++i;
-    if (i > b) out.push_back(s.substr(b, i - b));
-  }
-  return out;
-}
-
 template <typename T>
 bool parse_int(std::string_view s, T& v) {
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
@@ -84,7 +72,7 @@ std::map<std::string, std::size_t> parse_header_lines(std::string_view head,
     const bool empty_line = text.empty();
     while (!text.empty() && (text.back() == '\r' || text.back() == ' ' || text.back() == '\t'))
       text.remove_suffix(1);
-    const auto tok = split_ws(text);
+    const auto tok = detail::split_ws(text);
     // PCL skips an empty line but ends its header at a blank one (spaces, tabs or a CR alone),
     // then reads the data from the wrong place and crashes (a fuzz finding): refuse it.
     if (tok.empty() && !empty_line)

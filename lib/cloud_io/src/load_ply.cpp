@@ -124,18 +124,6 @@ struct Header {
   std::size_t lines = 0;  ///< header lines, so ascii body lines can be numbered
 };
 
-std::vector<std::string_view> split_ws(std::string_view s) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < s.size()) {
-    while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
-    const std::size_t b = i;
-    while (i < s.size() && s[i] != ' ' && s[i] != '\t') ++i;
-    if (i > b) out.push_back(s.substr(b, i - b));
-  }
-  return out;
-}
-
 Header parse_header(std::string_view head, const std::string& file) {
   Header h;
   std::size_t pos = 0, line = 0;
