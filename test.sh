@@ -8,10 +8,11 @@
 #                the test suite and the fuzz binaries from ONE configure (-DINDOORMAP_FUZZ=ON),
 #                and the whole suite under it; any report fails it.
 #   --fuzz       then every libFuzzer target of tests/fuzz from build-san/, all within one budget
-#                (scripts/fuzz.sh: 900 s for all, two at a time, 50,000 executions at least).
+#                (scripts/fuzz.sh: INDOORMAP_FUZZ_BUDGET, default 900 s, for all, two at a
+#                time, 50,000 executions at least).
 # The same through the environment: INDOORMAP_TEST_SANITIZE=1, INDOORMAP_TEST_FUZZ=1.
-# .ci/run uses all three. Every stage prints its duration, and the last lines list them all
-# (CI's times: docs/robustness.md, "CI stages and their times").
+# .ci/run uses all three with a 600 s fuzz budget. Every stage prints its duration, and the last
+# lines list them all (CI's times: docs/robustness.md, "CI stages and their times").
 set -euo pipefail
 cd "$(dirname "$0")"
 sanitize="${INDOORMAP_TEST_SANITIZE:-0}"
@@ -22,7 +23,7 @@ for a in "$@"; do
     --sanitize) sanitize=1 ;;
     --fuzz) fuzz=1 ;;
     --no-bench) bench=OFF ;;
-    -h | --help) sed -n '2,14p' "$0"; exit 0 ;;
+    -h | --help) sed -n '2,15p' "$0"; exit 0 ;;
     *) echo "test.sh: unknown option '$a' (see --help)" >&2; exit 2 ;;
   esac
 done

@@ -60,6 +60,9 @@ for t in "${targets[@]}"; do
   }
 done
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+# The targets write every input to a file (the readers take paths): in memory (/dev/shm) that is
+# 2.5-7 times faster than /tmp on disk (ros_map: 450 against 3,400 executions per second).
+if [ -z "${TMPDIR:-}" ] && [ -d /dev/shm ] && [ -w /dev/shm ]; then export TMPDIR=/dev/shm; fi
 
 # One target, in the background: its log, then one summary line in $tree/fuzz-result-<t>.txt.
 run_target() {
@@ -67,17 +70,21 @@ run_target() {
   local work=$tree/fuzz-corpus/$t art=$tree/fuzz-artifacts/$t log=$tree/fuzz-$t.log
   mkdir -p "$work" "$art"
   local start rc=0
+  # The seeds; a target without regressions yet has no regressions/ folder (libFuzzer stops at
+  # a missing folder).
+  local dirs=("$work" tests/fuzz/corpus/"$t")
+  [ -d tests/fuzz/regressions/"$t" ] && dirs+=(tests/fuzz/regressions/"$t")
   start=$(date +%s)
   # A fixed seed: the same inputs in the same order from the committed seeds, so a clean run
   # here predicts a clean run in CI (a slower machine only stops earlier in the same sequence).
   "$tree/bin/fuzz_$t" -seed=1 -rss_limit_mb=2048 -timeout=2 -runs="$runs" -max_total_time="$cap" \
-    -print_final_stats=1 -artifact_prefix="$art/" "$work" tests/fuzz/corpus/"$t" \
-    tests/fuzz/regressions/"$t" >"$log" 2>&1 || rc=$?
+    -print_final_stats=1 -artifact_prefix="$art/" "${dirs[@]}" >"$log" 2>&1 || rc=$?
   local secs execs rss cov result=clean
   secs=$(($(date +%s) - start))
-  execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
-  rss=$(sed -n 's/^stat::peak_rss_mb: *//p' "$log" | tail -1)
-  cov=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | cut -d' ' -f2)
+  # (|| true: a run that stopped at once has no stats, and pipefail would end this runner)
+  execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1 || true)
+  rss=$(sed -n 's/^stat::peak_rss_mb: *//p' "$log" | tail -1 || true)
+  cov=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | cut -d' ' -f2 || true)
   if [ $rc -ne 0 ]; then
     result="FAILED (exit $rc): $(ls "$art" | tr '\n' ' ')"
     grep -E "ERROR|SUMMARY|indoormap fuzz target|runtime error" "$log" | head -5 >&2 || true
@@ -115,10 +122,19 @@ while [ ${#queue[@]} -gt 0 ] || [ ${#pid_end[@]} -gt 0 ]; do
     pid_end[$!]=$((now + cap))
     echo "fuzz: [$(date +%T)] $t started, $cap s at most" >&2
   done
-  finished=
-  wait -n -p finished "${!pid_end[@]}" || true
-  [ -n "$finished" ] && unset "pid_end[$finished]"
+  # wait -n can return for a target that ended earlier (bash keeps its status): a slot is free
+  # only when its process is really gone, so at most PARALLEL targets ever run at once.
+  wait -n "${!pid_end[@]}" 2>/dev/null || true
+  freed=0
+  for p in "${!pid_end[@]}"; do
+    if ! kill -0 "$p" 2>/dev/null; then
+      unset "pid_end[$p]"
+      freed=1
+    fi
+  done
+  [ $freed = 1 ] || sleep 0.5
 done
+wait  # every runner has written its result line
 
 summary=$tree/fuzz-summary.txt
 : >"$summary"

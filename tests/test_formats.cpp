@@ -26,15 +26,10 @@ namespace fs = std::filesystem;
 using namespace indoormap;
 using map_fixtures::kPgm;
 using map_fixtures::png_header;
+using test::replace_all;
 using nlohmann::json;
 
 namespace {
-
-std::string replace_all(std::string s, const std::string& from, const std::string& to) {
-  for (std::size_t at = 0; (at = s.find(from, at)) != std::string::npos; at += to.size())
-    s.replace(at, from.size(), to);
-  return s;
-}
 
 void expect_same_polygon(const Polygon& a, const Polygon& b) {
   ASSERT_EQ(a.size(), b.size());

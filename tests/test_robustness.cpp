@@ -15,14 +15,9 @@ using namespace indoormap;
 namespace fs = std::filesystem;
 using map_fixtures::kPgm;
 using map_fixtures::png_header;
+using test::replace_all;
 
 namespace {
-
-std::string replace_all(std::string s, const std::string& from, const std::string& to) {
-  for (std::size_t at = 0; (at = s.find(from, at)) != std::string::npos; at += to.size())
-    s.replace(at, from.size(), to);
-  return s;
-}
 
 std::string pcd(const std::string& data, std::uint64_t n, const std::string& fields = "x y z",
                 const std::string& type = "F F F") {

@@ -51,6 +51,13 @@ inline void write_text(const std::filesystem::path& p, const std::string& text) 
   out << text;
 }
 
+/// s with every occurrence of from replaced by to (left to right, not re-scanned).
+inline std::string replace_all(std::string s, const std::string& from, const std::string& to) {
+  for (std::size_t at = 0; (at = s.find(from, at)) != std::string::npos; at += to.size())
+    s.replace(at, from.size(), to);
+  return s;
+}
+
 inline std::string read_text(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::stringstream ss;
