@@ -102,3 +102,5 @@ void BM_ExploreSharedMap(benchmark::State& st) {
 BENCHMARK(BM_ExploreSharedMap)->Arg(0)->Arg(1)->Unit(benchmark::kSecond)->Iterations(1);
 
 }  // namespace
+
+BENCHMARK_MAIN();

@@ -88,3 +88,5 @@ void BM_Bresenham100(benchmark::State& st) {
 BENCHMARK(BM_Bresenham100);
 
 }  // namespace
+
+BENCHMARK_MAIN();

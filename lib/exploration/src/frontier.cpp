@@ -34,13 +34,19 @@ struct Padded {
     cls.assign(static_cast<std::size_t>(w) * h, 4);
     mark.assign(cls.size(), 0);
     const bool bl = blacklist.width == map.width && blacklist.height == map.height;
-    for (int r = 0; r < map.height; ++r)
+    for (int r = 0; r < map.height; ++r) {
+      const Cell* in = &map.at(0, r);
+      std::uint8_t* out = &cls[index(0, r)];
       for (int c = 0; c < map.width; ++c) {
-        const Cell v = map.at(c, r);
-        std::uint8_t k = v == Cell::kFree ? 1 : v == Cell::kUnknown ? 0 : 2;
-        if (k == 0 && bl && blacklist.at(c, r)) k = 3;
-        cls[index(c, r)] = k;
+        const Cell v = in[c];
+        out[c] = v == Cell::kFree ? 1 : v == Cell::kUnknown ? 0 : 2;
       }
+      if (bl) {
+        const std::uint8_t* b = &blacklist.at(0, r);
+        for (int c = 0; c < map.width; ++c)
+          if (b[c] && out[c] == 0) out[c] = 3;
+      }
+    }
     adj = {-w - 1, -w, -w + 1, -1, 1, w - 1, w, w + 1};
   }
   std::size_t index(int c, int r) const { return static_cast<std::size_t>(r + 1) * w + (c + 1); }
@@ -57,14 +63,14 @@ struct Padded {
 
 // A FIFO over a vector; every cell is enqueued at most once per queue, so its size is bounded.
 struct Queue {
-  std::vector<std::size_t> items;
+  std::vector<std::uint32_t> items;
   std::size_t head = 0;
   void clear() {
     items.clear();
     head = 0;
   }
   bool empty() const { return head == items.size(); }
-  void push(std::size_t i) { items.push_back(i); }
+  void push(std::size_t i) { items.push_back(static_cast<std::uint32_t>(i)); }
   std::size_t pop() { return items[head++]; }
 };
 
@@ -107,8 +113,10 @@ WfdResult detect_frontiers(const Grid<Cell>& map, const GridGeometry& g, CellInd
   params.validate();
   WfdResult out;
   if (!map.contains(robot.col, robot.row)) return out;
+  if (map.size() >= (std::size_t{1} << 31)) throw UsageError("wfd: map above 2^31 cells");
   Padded m(map, blacklist);
   Queue qm, qf;
+  qm.items.reserve(map.size() / 2);
   std::vector<std::size_t> new_frontier;
   const std::size_t pose = m.index(robot.col, robot.row);
   qm.push(pose);                     // 2
