@@ -5,9 +5,12 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <numbers>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
+#include <vector>
 
 #include "indoormap/exploration/coverage.hpp"
 #include "indoormap/exploration/explore.hpp"
@@ -154,8 +157,11 @@ TEST(Navigator, InflationButNotAroundRobotAndGoal) {
   const PathResult p = plan_path(m, g, {1, 10}, {38, 10}, nav);
   ASSERT_EQ(p.status, PathStatus::kFound);
   // Away from both ends the path keeps 0.3 m (3 cells) from the walls.
-  for (const CellIndex& c : p.cells)
-    if (c.col > 4 && c.col < 35) EXPECT_GE(std::min(c.row, 19 - c.row), 3) << c.col;
+  for (const CellIndex& c : p.cells) {
+    if (c.col > 4 && c.col < 35) {
+      EXPECT_GE(std::min(c.row, 19 - c.row), 3) << c.col;
+    }
+  }
   nav.keep_clear_m = 0.0;
   EXPECT_EQ(plan_path(m, g, {1, 10}, {38, 10}, nav).status, PathStatus::kNoPath);
 }
@@ -307,54 +313,87 @@ const char* const kMaps[] = {"Freiburg52_scan", "Freiburg79_scan", "lab_a_scan",
                              "lab_c_scan",      "lab_intel",       "office_a",   "office_b",
                              "office_c",        "office_d"};
 
-// Every furnished map, three fixed starts, both rules: at least 95 % of the reachable free
-// space, and the gain rule's distance to 95 % on average at most 0.85 x the paper rule's.
-// Measured on this branch: the gain rule reaches 95 % in all 30 runs; the paper's nearest-frontier
-// rule in 28 (office_a starts 0 and 1 end at 0.35 and 0.94: it stalls, chasing frontiers behind
-// furniture). So the paper rule is held to 28 of 30, and that shortfall is reported, not hidden.
-// Ratio of the distances to 95 %: 0.687 (sums), 0.702 (mean of ratios).
-TEST(ExploreShared, EveryFurnishedMapFromThreeStarts) {
-  INDOORMAP_REQUIRE_DATA(dir, "room-segmentation-maps");
+// What a set of runs adds up to: the distances to 95 % of the reachable free space of the paper's
+// nearest-frontier rule and of the gain rule, and the paper rule's runs below 95 %.
+struct SweepFigures {
   double sum_nearest = 0.0, sum_gain = 0.0, sum_ratio = 0.0;
   int runs = 0, nearest_short = 0;
-  for (const char* name : kMaps) {
-    const Grid<Cell> truth = read_png_map(dir / (std::string(name) + "_furnitures.png"));
-    const GridGeometry g({0, 0}, 0.05, truth.width, truth.height);
-    ExploreParams p;
-    const auto starts = start_points(truth, g, p.robot.radius_m + p.navigator.inflation_margin_m);
-    ASSERT_EQ(starts.size(), 3u) << name;
-    for (std::size_t k = 0; k < starts.size(); ++k) {
-      double d95[2] = {0, 0};
-      for (GoalRule rule : {GoalRule::kNearestFrontier, GoalRule::kGainPerCost}) {
-        p.goal.rule = rule;
-        p.seed = 1;
-        const ExploreResult r = explore(truth, g, {starts[k].x(), starts[k].y(), 0.0}, p);
-        const auto d = r.distance_to_share(0.95);
-        std::printf(
-            "[ figures  ] %s start %zu (%.2f, %.2f) %s: explored %.3f, distance %.1f m, "
-            "to 95 %% %.1f m, time %.0f s, goals %zu, blacklisted %zu, stops %zu\n",
-            name, k, starts[k].x(), starts[k].y(), std::string(to_string(rule)).c_str(),
-            r.explored_share, r.distance_m, d ? *d : -1.0, r.time_s, r.goals,
-            r.blacklisted_frontiers, r.obstacle_stops);
-        if (rule == GoalRule::kGainPerCost)
-          EXPECT_GE(r.explored_share, 0.95) << name << " start " << k;
-        else
-          nearest_short += r.explored_share < 0.95;
-        d95[rule == GoalRule::kGainPerCost] = d ? *d : r.distance_m;
+};
+
+// Explores the furnished map `name` from the given ones of its three fixed starts, with both
+// rules; prints each run's figures, expects the gain rule to reach 95 % and adds up the rest.
+void explore_map(const std::filesystem::path& dir, const char* name,
+                 const std::vector<std::size_t>& start_ids, SweepFigures& f) {
+  const Grid<Cell> truth = read_png_map(dir / (std::string(name) + "_furnitures.png"));
+  const GridGeometry g({0, 0}, 0.05, truth.width, truth.height);
+  ExploreParams p;
+  const auto starts = start_points(truth, g, p.robot.radius_m + p.navigator.inflation_margin_m);
+  ASSERT_EQ(starts.size(), 3u) << name;
+  for (std::size_t k : start_ids) {
+    double d95[2] = {0, 0};
+    for (GoalRule rule : {GoalRule::kNearestFrontier, GoalRule::kGainPerCost}) {
+      p.goal.rule = rule;
+      p.seed = 1;
+      const ExploreResult r = explore(truth, g, {starts[k].x(), starts[k].y(), 0.0}, p);
+      const auto d = r.distance_to_share(0.95);
+      std::printf(
+          "[ figures  ] %s start %zu (%.2f, %.2f) %s: explored %.3f, distance %.1f m, "
+          "to 95 %% %.1f m, time %.0f s, goals %zu, blacklisted %zu, stops %zu\n",
+          name, k, starts[k].x(), starts[k].y(), std::string(to_string(rule)).c_str(),
+          r.explored_share, r.distance_m, d ? *d : -1.0, r.time_s, r.goals, r.blacklisted_frontiers,
+          r.obstacle_stops);
+      if (rule == GoalRule::kGainPerCost) {
+        EXPECT_GE(r.explored_share, 0.95) << name << " start " << k;
+      } else {
+        f.nearest_short += r.explored_share < 0.95;
       }
-      sum_nearest += d95[0];
-      sum_gain += d95[1];
-      sum_ratio += d95[1] / std::max(d95[0], 1e-9);
-      ++runs;
+      d95[rule == GoalRule::kGainPerCost] = d ? *d : r.distance_m;
     }
+    f.sum_nearest += d95[0];
+    f.sum_gain += d95[1];
+    f.sum_ratio += d95[1] / std::max(d95[0], 1e-9);
+    ++f.runs;
   }
+}
+
+void print_figures(const SweepFigures& f) {
   std::printf(
       "[ figures  ] distance to 95 %%: gain rule / paper rule = %.3f (ratio of the "
       "sums), %.3f (mean of the ratios), over %d runs\n",
-      sum_gain / sum_nearest, sum_ratio / runs, runs);
-  EXPECT_LE(sum_gain / sum_nearest, 0.85);
-  std::printf("[ figures  ] paper rule below 95 %%: %d of %d runs\n", nearest_short, runs);
-  EXPECT_LE(nearest_short, 2);
+      f.sum_gain / f.sum_nearest, f.sum_ratio / f.runs, f.runs);
+  std::printf("[ figures  ] paper rule below 95 %%: %d of %d runs\n", f.nearest_short, f.runs);
+}
+
+// In the suite: the two Freiburg maps from their middle start (start 1), both rules; four runs,
+// about 10 s in Release. Measured: the paper rule 123.3 m and 136.3 m to 95 %, the gain rule
+// 115.4 m and 73.4 m (ratio of the sums 0.727); both rules explore at least 99.7 %.
+TEST(ExploreShared, TwoFreiburgMapsFromTheirMiddleStart) {
+  INDOORMAP_REQUIRE_DATA(dir, "room-segmentation-maps");
+  SweepFigures f;
+  for (const char* name : {"Freiburg52_scan", "Freiburg79_scan"}) explore_map(dir, name, {1}, f);
+  print_figures(f);
+  EXPECT_LE(f.sum_gain / f.sum_nearest, 0.85);
+  EXPECT_EQ(f.nearest_short, 0);
+}
+
+// The full sweep, out of the suite (60 runs, 3.5-8 minutes in Release): run it with
+// scripts/explore_sweep.sh (INDOORMAP_EXPLORE_SWEEP=1). Every furnished map, three fixed starts,
+// both rules: at least 95 % of the reachable free space, and the gain rule's distance to 95 % on
+// average at most 0.85 x the paper rule's.
+// Measured: the gain rule reaches 95 % in all 30 runs; the paper's nearest-frontier rule in 28
+// (office_a starts 0 and 1 end at 0.35 and 0.94: it stalls, chasing frontiers behind furniture).
+// So the paper rule is held to 28 of 30, and that shortfall is reported, not hidden. Ratio of the
+// distances to 95 %: 0.687 (sums), 0.702 (mean of ratios).
+TEST(ExploreShared, EveryFurnishedMapFromThreeStarts) {
+  if (!std::getenv("INDOORMAP_EXPLORE_SWEEP"))
+    GTEST_SKIP() << "the full shared-map sweep (60 runs, minutes) runs only with "
+                    "INDOORMAP_EXPLORE_SWEEP=1: scripts/explore_sweep.sh";
+  INDOORMAP_REQUIRE_DATA(dir, "room-segmentation-maps");
+  SweepFigures f;
+  for (const char* name : kMaps) explore_map(dir, name, {0, 1, 2}, f);
+  print_figures(f);
+  EXPECT_LE(f.sum_gain / f.sum_nearest, 0.85);
+  EXPECT_LE(f.nearest_short, 2);
 }
 
 }  // namespace
