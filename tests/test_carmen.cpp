@@ -9,6 +9,7 @@
 
 #include "indoormap/core/errors.hpp"
 #include "indoormap/formats/carmen.hpp"
+#include "indoormap/formats/carmen_laser.hpp"
 #include "indoormap/laser/mappers.hpp"
 #include "indoormap/laser/raycast.hpp"
 #include "test_support.hpp"
@@ -37,17 +38,8 @@ std::filesystem::path write_log(const std::string& name, const std::string& text
   return p;
 }
 
-// The adapter laser-to-map uses: a CARMEN message as a scan.
 LaserScan to_scan(const formats::CarmenScan& c) {
-  LaserScan s;
-  s.ranges_m = c.ranges_m;
-  s.angle_min_rad = c.angle_min_rad;
-  s.angle_increment_rad = c.angle_increment_rad;
-  s.max_range_m = c.max_range_m;
-  s.robot_pose_map = {c.x_m, c.y_m, c.theta_rad};
-  s.laser_offset = {c.laser_offset.x_m, c.laser_offset.y_m, c.laser_offset.theta_rad};
-  s.time_s = c.logger_timestamp_s;
-  return s;
+  return formats::to_laser_scan(c);
 }
 
 TEST(Carmen, ReadsEveryMessageKind) {
@@ -92,11 +84,38 @@ TEST(Carmen, ReadsEveryMessageKind) {
   EXPECT_EQ(st.scans, 3u);
   EXPECT_EQ(st.params, 4u);
   EXPECT_EQ(st.skipped, 6u);  // comment, empty line, ODOM, NEFF, RLASER, TRUEPOS
-  // The laser offset moves the beams: forward 0.25 m along the heading.
+  // FLASER's x y theta is the laser's pose (CARMEN adds the offset before logging): the scan's
+  // laser pose is the message's pose, and the robot sits 0.25 m behind it along the heading.
   formats::CarmenReader again(path.string());
   ASSERT_TRUE(again.next(s));
   const LaserScan scan = to_scan(s);
-  EXPECT_NEAR(scan.laser_pose_map().x_m, 1.0 + 0.25 * std::cos(0.5), 1e-12);
+  EXPECT_NEAR(scan.laser_pose_map().x_m, 1.0, 1e-12);
+  EXPECT_NEAR(scan.laser_pose_map().y_m, 2.0, 1e-12);
+  EXPECT_NEAR(scan.laser_pose_map().theta_rad, 0.5, 1e-12);
+  EXPECT_NEAR(scan.robot_pose_map.x_m, 1.0 - 0.25 * std::cos(0.5), 1e-12);
+  EXPECT_NEAR(scan.robot_pose_map.y_m, 2.0 - 0.25 * std::sin(0.5), 1e-12);
+}
+
+TEST(Carmen, FlaserPoseIsTheLaserPoseWhateverTheOffset) {
+  // A side and angular offset too: the beams start at the message's pose and point along its
+  // heading, and composing the offset onto the robot pose gives that pose back.
+  formats::CarmenScan c;
+  c.ranges_m = {1.0f};
+  c.max_range_m = 10.0;
+  c.x_m = -3.0;
+  c.y_m = 4.0;
+  c.theta_rad = 3.0;
+  c.laser_offset = {0.3, -0.2, 0.4};
+  const LaserScan s = to_scan(c);
+  const Pose2d lp = s.laser_pose_map();
+  EXPECT_NEAR(lp.x_m, -3.0, 1e-12);
+  EXPECT_NEAR(lp.y_m, 4.0, 1e-12);
+  EXPECT_NEAR(lp.theta_rad, 3.0, 1e-12);
+  EXPECT_NEAR(s.robot_pose_map.theta_rad, 2.6, 1e-12);
+  const auto hits = hit_points_map(s);
+  ASSERT_EQ(hits.size(), 1u);
+  EXPECT_NEAR(hits[0].x(), -3.0 + std::cos(3.0), 1e-9);
+  EXPECT_NEAR(hits[0].y(), 4.0 + std::sin(3.0), 1e-9);
 }
 
 TEST(Carmen, ReadsGzipAndCallsBackPerScan) {
@@ -172,11 +191,11 @@ TEST(Carmen, BadLinesAreInputErrorsWithTheirLine) {
 
 // ------------------------------------------------------------------------------- real logs
 // The three corrected logs at 0.05 m cells: HIMM with the paper's rules, HIMM without the freeze
-// at 15, and log-odds. The issue asks for >= 80 % of beams within 2 cells. Measured (this
-// branch): intel 0.851 / 0.878 (HIMM / log-odds), csail 0.807 / 0.828; freiburg-079 stays below:
-// 0.49 / 0.68 with the PARAM laser offset (-0.04 m), 0.56 / 0.75 without it (the corrected poses
-// seem to be the laser's); HIMM without the freeze 0.68 / 0.74. For freiburg-079 the test guards
-// those figures against regressions instead of the 80 %.
+// at 15, and log-odds. The issue asks for >= 80 % of beams within 2 cells. Measured: intel 0.851 /
+// 0.878 (HIMM / log-odds), csail 0.807 / 0.828; freiburg-079 stays below: 0.559 / 0.746 since
+// FLASER's pose is taken as the laser's (carmen_laser.hpp; 0.49 / 0.68 when its PARAM offset of
+// -0.04 m was applied a second time), HIMM without the freeze 0.744. docs/laser-to-map.md says
+// why; for freiburg-079 the test guards those figures against regressions instead of the 80 %.
 struct LogCase {
   const char* file;
   double min_himm, min_log_odds;
@@ -228,7 +247,7 @@ TEST_P(CarmenLogs, MapsAgreeWithTheirScans) {
 INSTANTIATE_TEST_SUITE_P(Shared, CarmenLogs,
                          ::testing::Values(LogCase{"intel-corrected.log.gz", 0.80, 0.80},
                                            LogCase{"csail-corrected.log.gz", 0.80, 0.80},
-                                           LogCase{"freiburg-079-corrected.log.gz", 0.45, 0.65}),
+                                           LogCase{"freiburg-079-corrected.log.gz", 0.54, 0.73}),
                          [](const ::testing::TestParamInfo<LogCase>& info) {
                            std::string n = info.param.file;
                            n = n.substr(0, n.find('-'));

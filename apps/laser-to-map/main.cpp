@@ -1,0 +1,201 @@
+// laser-to-map: a CARMEN laser log with known poses to an occupancy map (ROS map.pgm + map.yaml,
+// map.png) by HIMM or log-odds mapping, and the map's self-consistency against the scans it was
+// built from (laser_map.json, stderr). Usage, options and figures: docs/laser-to-map.md.
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <optional>
+
+#include "indoormap/core/atomic_file.hpp"
+#include "indoormap/core/errors.hpp"
+#include "indoormap/formats/carmen_laser.hpp"
+#include "indoormap/formats/json.hpp"
+#include "indoormap/version.hpp"
+#include "laser_config.hpp"
+#include "laser_outputs.hpp"
+#include "main_guard.hpp"
+
+namespace fs = std::filesystem;
+using namespace indoormap;
+using nlohmann::json;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+/// The command line; exit_code is set when parsing ends the run (--help, a usage error).
+struct Args {
+  std::string log_path, out_dir, config_file, method;
+  std::optional<double> cell_m, max_range_m;
+  bool print_config = false, quiet = false;
+  std::optional<int> exit_code;
+};
+
+Args parse_args(int argc, char** argv) {
+  CLI::App cli{
+      "laser-to-map: build an occupancy map from a CARMEN laser log with known poses (HIMM or "
+      "log-odds)\nand check it against its own scans. Writes map.pgm + map.yaml (ROS map_server), "
+      "map.png,\nlaser_map.json and summary.json in the output directory.\n"};
+  cli.footer(
+      "Examples:\n"
+      "  laser-to-map ../shared/data/carmen-logs/intel-corrected.log.gz -o out/intel\n"
+      "  laser-to-map ../shared/data/carmen-logs/csail-corrected.log.gz --method himm -o "
+      "out/csail\n"
+      "  laser-to-map --print-config > laser.yaml\n"
+      "  laser-to-map -c laser.yaml ../shared/data/carmen-logs/freiburg-079-corrected.log.gz -o "
+      "out/fr\n"
+      "Logs: plain text or gzip. Exit codes: 0 done, 2 bad usage or bad log (the message names "
+      "the\n"
+      "file and line; nothing is written), 3 no usable scan in the log, 1 other failure.");
+  Args a;
+  cli.add_option("log", a.log_path, "CARMEN log (FLASER messages with poses), plain or .gz");
+  cli.add_option("-o,--out", a.out_dir, "Output directory (created if missing)");
+  cli.add_option("-c,--config", a.config_file,
+                 "YAML parameters (defaults: config/laser-to-map.yaml)");
+  cli.add_option("--method", a.method, "Mapping method: himm or logodds (default logodds)");
+  cli.add_option("--cell-m", a.cell_m, "Cell size in metres (mapping.cell_m, default 0.05)");
+  cli.add_option("--max-range-m", a.max_range_m,
+                 "Longer readings are not obstacles nor checked (mapping.max_range_m, default 44)");
+  cli.add_flag("-q,--quiet", a.quiet, "No progress or figures on stderr (errors only)");
+  cli.add_flag("--print-config", a.print_config, "Print the effective parameters as YAML and exit");
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    a.exit_code = cli.exit(e) == 0 ? 0 : static_cast<int>(ExitCode::kBadInput);
+  }
+  return a;
+}
+
+/// One pass over the log: on_scan(scan) for every usable FLASER message; a scan that
+/// laser::validate rejects (a non-finite pose) is counted in skipped. A progress line on stderr
+/// every `every` scans (0: none). Throws InputError on the first bad line.
+formats::CarmenStats log_pass(const std::string& path, const app::LaserMapConfig& cfg, int every,
+                              const char* what, std::size_t& skipped,
+                              const std::function<void(const laser::LaserScan&)>& on_scan) {
+  formats::CarmenReader reader(path, cfg.log);
+  formats::CarmenScan c;
+  laser::LaserScan s;
+  skipped = 0;
+  while (reader.next(c)) {
+    s = formats::to_laser_scan(c);
+    try {
+      laser::validate(s);
+    } catch (const UsageError&) {
+      ++skipped;
+      continue;
+    }
+    on_scan(s);
+    const std::size_t n = reader.stats().scans;
+    if (every > 0 && n % static_cast<std::size_t>(every) == 0)
+      std::cerr << "laser-to-map: " << what << ": " << n << " scans (line " << c.line << ")\n";
+  }
+  return reader.stats();
+}
+
+/// Maps the log (first pass), then casts every scan into the finished map (second pass).
+app::LaserMapRun map_log(const std::string& path, const app::LaserMapConfig& cfg, bool quiet) {
+  app::LaserMapRun run;
+  run.log_path = path;
+  run.config = cfg;
+  const int every = quiet ? 0 : cfg.progress_every_scans;
+  auto t0 = Clock::now();
+  auto mapper = laser::make_mapper(cfg.method, cfg.grid, cfg.himm, cfg.log_odds);
+  run.stats = log_pass(path, cfg, every, "mapping", run.scans_skipped, [&](const auto& s) {
+    mapper->integrate(s);
+    // The path for the picture: a point per cell moved (none while the robot stands still).
+    const Eigen::Vector2d p = s.robot_pose_map.position_m();
+    if (run.path_m.empty() || (p - run.path_m.back()).norm() >= cfg.grid.cell_m)
+      run.path_m.push_back(p);
+  });
+  run.scans_mapped = mapper->scan_count();
+  run.map_ms = ms_since(t0);
+  if (run.scans_mapped == 0) return run;
+  t0 = Clock::now();
+  run.map = mapper->snapshot();
+  mapper.reset();
+  laser::ConsistencyParams cp = cfg.consistency;
+  cp.max_range_m = cfg.grid.max_range_m;
+  laser::ConsistencyCheck check(run.map.cells, run.map.geometry, cp);
+  std::size_t skipped = 0;
+  log_pass(path, cfg, every, "checking", skipped, [&](const auto& s) { check.add(s); });
+  run.check = check.result();
+  run.check_ms = ms_since(t0);
+  return run;
+}
+
+app::LaserMapConfig effective_config(const Args& a) {
+  app::LaserMapConfig cfg;
+  if (!a.config_file.empty()) app::merge_laser_map_config_file(cfg, a.config_file);
+  if (!a.method.empty()) cfg.method = app::parse_method(a.method);
+  if (a.cell_m) cfg.grid.cell_m = *a.cell_m;
+  if (a.max_range_m) cfg.grid.max_range_m = *a.max_range_m;
+  app::validate(cfg);
+  return cfg;
+}
+
+int run(int argc, char** argv) {
+  const Args a = parse_args(argc, argv);
+  if (a.exit_code) return *a.exit_code;
+  const auto t_start = Clock::now();
+  const app::LaserMapConfig cfg = effective_config(a);
+  if (a.print_config) {
+    std::cout << app::to_yaml(cfg);
+    return 0;
+  }
+  if (a.log_path.empty()) throw UsageError("no log given: laser-to-map LOG -o DIR (see --help)");
+  if (a.out_dir.empty()) throw UsageError("no output directory given: use -o DIR");
+  if (!fs::exists(a.log_path)) throw InputError(a.log_path, "no such file");
+  const fs::path out = a.out_dir;
+  ensure_writable_dir(out);
+
+  // Everything is computed (and every log line read) before the first file is written.
+  const app::LaserMapRun r = map_log(a.log_path, cfg, a.quiet);
+  if (r.scans_mapped == 0) {
+    std::cerr << "laser-to-map: " << a.log_path << ": no usable FLASER scan (" << r.stats.scans
+              << " read, " << r.scans_skipped << " with an unusable pose); nothing written\n";
+    return static_cast<int>(ExitCode::kNoResult);
+  }
+  const auto t_write = Clock::now();
+  auto files = app::write_laser_map_outputs(out, r);
+  files.push_back("summary.json");
+  const json summary = {
+      {"program", "laser-to-map"},
+      {"version", kVersion},
+      {"log", a.log_path},
+      {"parameters", app::to_json(cfg)},
+      {"result", app::laser_map_json(r)},
+      {"timings_ms",
+       {{"map", r.map_ms},
+        {"check", r.check_ms},
+        {"write", ms_since(t_write)},
+        {"total", ms_since(t_start)}}},
+      {"outputs", files},
+  };
+  formats::write_json(out / "summary.json", summary);
+  if (!a.quiet) {
+    const auto& c = r.check;
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "%zu scans mapped (%s, %zu skipped); consistency: %zu beams, %.1f %% within "
+                  "%g m, median |error| %.4f m",
+                  r.scans_mapped, cfg.method == laser::MapperKind::kHimm ? "himm" : "logodds",
+                  r.scans_skipped, c.beams_checked, c.within_share * 100.0, c.within_m,
+                  c.median_abs_error_m);
+    std::cerr << "laser-to-map: " << line << "\n";
+    std::cout << "outputs written to " << out.string() << "\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return app::run_guarded("laser-to-map", [&] { return run(argc, argv); });
+}
