@@ -83,6 +83,17 @@ TEST(ExploreSim, SingleRoomOutputsAndDeterminism) {
   EXPECT_EQ(jc["start"]["rule"], "given");
   EXPECT_DOUBLE_EQ(jc["start"]["heading_deg"].get<double>(), 90.0);
   EXPECT_GE(jc["explored_share"].get<double>(), 0.95);
+
+  // A ROS map (map.yaml) as input: the map the first run built, its unknown cells walls.
+  r = test::run_app("explore-sim",
+                    (dir / "a" / "map.yaml").string() + " -q -o " + (dir / "d").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto jd = nlohmann::json::parse(test::read_text(dir / "d" / "explore.json"));
+  EXPECT_GE(jd["explored_share"].get<double>(), 0.95);
+  r = test::run_app("explore-sim", (dir / "a" / "map.yaml").string() + " --resolution 0.05 -o " +
+                                       (dir / "e").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--resolution is for plain"), std::string::npos) << r.err;
 }
 
 TEST(ExploreSim, BadInputsGetAMessageAnExitCodeAndNoOutputs) {

@@ -14,6 +14,9 @@ struct ExploreSimConfig {
   exploration::ExploreParams explore;
   double laser_fov_deg = 270.0;  ///< becomes explore.laser.fov_rad
   int strip_panels = 5;          ///< panels of explore_strip.png
+  /// Unknown cells of the input map are walls (the robot cannot drive or see into them); false:
+  /// free space that the laser sees through.
+  bool unknown_is_obstacle = true;
   ExploreSimConfig() {
     explore.snapshot_period_s = 15.0;
     explore.max_snapshots = 400;
@@ -24,6 +27,7 @@ struct ExploreSimConfig {
 template <class C, class F>
 void visit_explore(C& c, F&& f) {
   auto& e = c.explore;
+  f("input", "unknown_is_obstacle", c.unknown_is_obstacle);
   f("robot", "radius_m", e.robot.radius_m);
   f("robot", "speed_mps", e.robot.speed_mps);
   f("robot", "max_turn_rate_radps", e.robot.max_turn_rate_radps);

@@ -3,8 +3,11 @@
 // built, its path and how the exploration went. Usage and outputs: docs/explore-sim.md.
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
+#include <memory>
 #include <numbers>
 #include <optional>
 
@@ -26,6 +29,12 @@ namespace {
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::string format(const char* fmt, double a, double b = 0.0, double c = 0.0) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, fmt, a, b, c);
+  return buf;
 }
 
 /// The command line; exit_code is set when parsing ends the run (--help, a usage error).
@@ -100,8 +109,9 @@ laser::Pose2d choose_start(const Args& a, const formats::RosMap& map,
   if (a.start_s.empty()) {
     const auto pts = exploration::start_points(map.cells, map.geometry, clearance, {0.5});
     if (pts.empty())
-      throw Error("no free cell of " + a.map_path + " is farther than " +
-                      std::to_string(clearance) + " m from every obstacle: the robot fits nowhere",
+      throw Error(a.map_path + format(": no free cell is farther than %.2f m from every "
+                                      "obstacle: the robot fits nowhere",
+                                      clearance),
                   ExitCode::kNoResult);
     start_rule = "middle of the largest region where the robot fits";
     return {pts[0].x(), pts[0].y(), 0.0};
@@ -141,7 +151,10 @@ int run(int argc, char** argv) {
   if (a.map_path.empty()) throw UsageError("no map given: explore-sim MAP -o DIR (see --help)");
   if (a.out_dir.empty()) throw UsageError("no output directory given: use -o DIR");
   auto t0 = std::chrono::steady_clock::now();
-  const formats::RosMap map = load_map(a);
+  formats::RosMap map = load_map(a);
+  if (cfg.unknown_is_obstacle)
+    for (Cell& c : map.cells.data)
+      if (c == Cell::kUnknown) c = Cell::kWall;
   const double load_ms = ms_since(t0);
   app::ExploreRunInfo info;
   info.start = choose_start(a, map, cfg.explore, info.start_rule);
@@ -149,10 +162,10 @@ int run(int argc, char** argv) {
   if (!exploration::reachable_free_space(map.cells, map.geometry,
                                          map.geometry.cell_of(info.start.position_m()), clearance)
            .start_free)
-    throw Error("start (" + std::to_string(info.start.x_m) + ", " + std::to_string(info.start.y_m) +
-                    ") is not in free space where the robot fits (within " +
-                    std::to_string(clearance) +
-                    " m of an obstacle, or in one): nothing is reachable; choose another --start",
+    throw Error(format("start (%.2f, %.2f) is not in free space where the robot fits (in an "
+                       "obstacle or within %.2f m of one): nothing is reachable; choose "
+                       "another --start",
+                       info.start.x_m, info.start.y_m, clearance),
                 ExitCode::kNoResult);
   const fs::path out = a.out_dir;
   ensure_writable_dir(out);
