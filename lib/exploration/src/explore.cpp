@@ -127,6 +127,7 @@ struct Run {
     const double share =
         reach_in_map.empty() ? 0.0 : static_cast<double>(known) / reach_in_map.size();
     out.coverage.push_back({t, out.distance_m, share});
+    if (p.progress) p.progress(out.coverage.back());
     if (share > best_share + 0.001) {
       best_share = share;
       best_share_at = t;

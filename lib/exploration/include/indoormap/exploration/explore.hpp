@@ -4,6 +4,7 @@
 // the path with pure pursuit, stops for obstacles and backs off, blacklists unreachable
 // frontiers, and ends when no reachable frontier is left. Deterministic for a fixed seed.
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -14,6 +15,8 @@
 #include "indoormap/laser/mappers.hpp"
 
 namespace indoormap::exploration {
+
+struct CoverageSample;
 
 struct ExploreParams {
   RobotParams robot;
@@ -43,6 +46,9 @@ struct ExploreParams {
   double max_stall_s = 300.0;
   std::size_t path_sample_every = 5;  ///< keep every n-th control step's pose in the path
   std::uint32_t seed = 1;
+  /// Called with every coverage sample (optional; e.g. progress messages). Does not change the
+  /// run.
+  std::function<void(const CoverageSample&)> progress;
   void validate() const;
 };
 
