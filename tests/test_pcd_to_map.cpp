@@ -61,6 +61,23 @@ bool empty_or_missing(const fs::path& dir) { return !fs::exists(dir) || fs::is_e
 
 }  // namespace
 
+// -q: nothing on stderr for a clean run (no progress, no run report), the same outputs; without
+// it the run report is there.
+TEST(PcdToMap, QuietPrintsNothingOnStderr) {
+  const fs::path dir = test::scratch_dir();
+  const std::string args = room_file().string() + " --scanner 3,2.5,1.2 -o ";
+  const auto loud = run_app("pcd-to-map", args + (dir / "a").string());
+  ASSERT_EQ(loud.exit_code, 0) << loud.err;
+  EXPECT_NE(loud.err.find("points ("), std::string::npos) << loud.err;
+  const auto quiet = run_app("pcd-to-map", args + (dir / "b").string() + " -q");
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
+  EXPECT_EQ(quiet.err, "");
+  EXPECT_EQ(test::read_text(dir / "a" / "map.pgm"), test::read_text(dir / "b" / "map.pgm"));
+  const auto fe = run_app("furniture-extract", args + (dir / "c").string() + " --quiet");
+  ASSERT_EQ(fe.exit_code, 0) << fe.err;
+  EXPECT_EQ(fe.err, "");
+}
+
 TEST(PcdToMap, WritesEveryOutputInItsFormat) {
   const auto out = test::scratch_dir() / "out";
   auto r = run_app("pcd-to-map", room_file().string() + " --scanner 3,2.5,1.2 -o " + out.string());

@@ -17,6 +17,7 @@ void add_pipeline_options(CLI::App& app, PipelineCli& cli) {
   app.add_option("-o,--out", cli.out_dir, "Output directory (created if missing)");
   app.add_option("-c,--config", cli.config_file, "YAML parameters (see config/default.yaml)");
   app.add_flag("--print-config", cli.print_config, "Print the effective parameters as YAML and exit");
+  app.add_flag("-q,--quiet", cli.quiet, "No progress or run report on stderr (warnings still shown)");
   app.add_option("--scans", cli.scans, "3DTK: scan numbers to read, e.g. 0-8 or 3");
   app.add_option("--up-axis", cli.up_axis, "Up axis of PCD/PLY/XYZ input: z (default) or y")
       ->check(CLI::IsMember({"z", "y"}));

@@ -25,6 +25,7 @@ struct PipelineCli {
   bool no_level = false;
   std::string start;  ///< "X,Y[,DEG]" map frame: plan a route (with goal)
   std::string goal;   ///< "X,Y[,DEG]"
+  bool quiet = false;  ///< -q: no progress or run report on stderr (warnings still shown)
 };
 
 /// Parses "X,Y" or "X,Y,DEG" (metres, degrees counter-clockwise from +x). Throws UsageError

@@ -91,7 +91,7 @@ void finish_summary(json& summary, const fs::path& out, std::vector<std::string>
 PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_input_points) {
   PipelineRun run;
   const auto t0 = std::chrono::steady_clock::now();
-  cfg.load.progress = terminal_progress();
+  if (!cli.quiet) cfg.load.progress = terminal_progress();
   cloud_io::LoadResult loaded = cloud_io::load_clouds(cli.inputs, cfg.load);
   run.load_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -224,11 +224,12 @@ json summary_json(const std::string& program, const PipelineRun& run, const Pipe
   };
 }
 
-void report(const std::string& program, const PipelineRun& run) {
+void report(const std::string& program, const PipelineRun& run, bool quiet) {
   const auto& m = run.map;
   std::uint64_t dropped = 0;
   for (const auto& in : run.inputs) dropped += in.points_dropped;
   for (const auto& w : m.warnings) std::cerr << program << ": warning: " << w << "\n";
+  if (quiet) return;
   std::cerr << program << ": " << run.kept << " points (" << dropped
             << " non-finite dropped), tilt " << m.level.tilt_deg << " deg, floor "
             << m.layers.floor_z_m << " m, ceiling " << m.layers.ceiling_z_m << " m"

@@ -67,6 +67,6 @@ nlohmann::json summary_json(const std::string& program, const PipelineRun& run,
                             const PipelineConfig& config);
 
 /// Prints the warnings and a one-line report on stderr.
-void report(const std::string& program, const PipelineRun& run);
+void report(const std::string& program, const PipelineRun& run, bool quiet = false);
 
 }  // namespace indoormap::app

@@ -64,8 +64,8 @@ int run(int argc, char** argv) {
   summary["timings_ms"]["border"] = border_ms;
   app::finish_summary(summary, out, outputs, t_write, setup->start);
 
-  app::report("furniture-extract", run);
-  std::cerr << "furniture-extract: " << objs.objects.size() << " objects\n";
+  app::report("furniture-extract", run, setup->cli.quiet);
+  if (!setup->cli.quiet) std::cerr << "furniture-extract: " << objs.objects.size() << " objects\n";
   std::cout << "outputs written to " << out.string() << "\n";
   return 0;
 }

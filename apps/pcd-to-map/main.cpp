@@ -70,7 +70,7 @@ int run(int argc, char** argv) {
   summary["timings_ms"]["objects"] = objects_ms;
   app::finish_summary(summary, out, outputs, t_write, setup->start);
 
-  app::report("pcd-to-map", run);
+  app::report("pcd-to-map", run, setup->cli.quiet);
   std::cout << "outputs written to " << out.string() << "\n";
   if (route && !route->found) std::cerr << "pcd-to-map: " << route->message << "\n";
   return route && !route->found ? static_cast<int>(ExitCode::kNoResult) : 0;
