@@ -169,11 +169,17 @@ TEST(ObjectsJson, WriteReadRoundTrip) {
       "id,kind,cells,area_m2,center_x_m,center_y_m,length_m,width_m,angle_deg,z_min_m,z_max_m,"
       "point_count,touches_wall");
   EXPECT_NE(csv.find("\n2,hanging,0,0,0.5,0.25,1,0.5,0,2,2.1,0,false\n"), std::string::npos) << csv;
-  // Without heights both columns stay empty. (objects.json writes them as null, which
-  // read_objects_json refuses today with "expected a number": a known gap, not changed here.)
+  // Without heights both columns stay empty; objects.json writes them as null, which reads back
+  // as "no height" (it was refused as "expected a number" before: map-eval exited 2).
   res.objects[1].has_height = false;
   const std::string csv2 = formats::objects_csv(res);
   EXPECT_NE(csv2.find("\n2,hanging,0,0,0.5,0.25,1,0.5,0,,,0,false\n"), std::string::npos) << csv2;
+  formats::write_objects_json(dir / "objects2.json", res, geo, {{"objects/object_1.pcd", 12}, {}});
+  const auto back2 = formats::read_objects_json(dir / "objects2.json");
+  ASSERT_EQ(back2.size(), 2u);
+  EXPECT_EQ(back2[0].z_max_m, 0.75);
+  EXPECT_FALSE(back2[1].z_min_m.has_value());
+  EXPECT_FALSE(back2[1].z_max_m.has_value());
 }
 
 // ------------------------------------------------------------------------------ room border

@@ -79,9 +79,9 @@ std::string objects_csv(const objects::ObjectsResult& objects) {
       << "id,kind,cells,area_m2,center_x_m,center_y_m,length_m,width_m,angle_deg,z_min_m,z_max_m,"
          "point_count,touches_wall\n";
   for (const auto& o : objects.objects) {
-    csv << o.id << ',' << to_string(o.kind) << ',' << o.cells << ',' << o.area_m2 << ',' << o.box.center_m.x()
-        << ',' << o.box.center_m.y() << ',' << o.box.length_m << ',' << o.box.width_m << ','
-        << o.box.angle_deg << ',';
+    csv << o.id << ',' << to_string(o.kind) << ',' << o.cells << ',' << o.area_m2 << ','
+        << o.box.center_m.x() << ',' << o.box.center_m.y() << ',' << o.box.length_m << ','
+        << o.box.width_m << ',' << o.box.angle_deg << ',';
     if (o.has_height)
       csv << o.z_min_m << ',' << o.z_max_m;
     else
@@ -133,8 +133,11 @@ std::vector<sim::EvalObject> read_objects_json_unguarded(const fs::path& path) {
     } else {
       bad(path, key, "needs 'footprint' or 'obb'");
     }
-    if (o.contains("z_min_m")) e.z_min_m = number(o["z_min_m"], path, key + ".z_min_m");
-    if (o.contains("z_max_m")) e.z_max_m = number(o["z_max_m"], path, key + ".z_max_m");
+    // null: no height measured (what write_objects_json writes for such an object).
+    if (o.contains("z_min_m") && !o["z_min_m"].is_null())
+      e.z_min_m = number(o["z_min_m"], path, key + ".z_min_m");
+    if (o.contains("z_max_m") && !o["z_max_m"].is_null())
+      e.z_max_m = number(o["z_max_m"], path, key + ".z_max_m");
     out.push_back(std::move(e));
   }
   return out;
