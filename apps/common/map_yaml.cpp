@@ -72,4 +72,16 @@ formats::RosMap read_ros_map(const fs::path& yaml_path, std::int64_t max_cells) 
   return formats::decode_ros_map(read_map_yaml(yaml_path), yaml_path, max_cells);
 }
 
+formats::RosMap load_map_argument(const std::string& path, double resolution_m, int free_min) {
+  const std::string ext = fs::path(path).extension().string();
+  if (ext == ".yaml" || ext == ".yml") {
+    if (resolution_m != 0.0)
+      throw UsageError("--resolution is for plain PNG/PGM maps; " + path + " is a map YAML");
+    return read_ros_map(path);
+  }
+  if (!(resolution_m > 0))
+    throw UsageError("map " + path + " is an image: give its --resolution in metres per pixel");
+  return formats::read_plain_map(path, resolution_m, free_min);
+}
+
 }  // namespace indoormap::app

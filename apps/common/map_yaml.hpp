@@ -18,4 +18,9 @@ formats::RosMapMeta read_map_yaml(const std::filesystem::path& yaml_path);
 formats::RosMap read_ros_map(const std::filesystem::path& yaml_path,
                              std::int64_t max_cells = 100'000'000);
 
+/// The map an app's MAP argument names: a map YAML (.yaml / .yml; resolution_m must then be 0),
+/// or a plain PNG / PGM image read with resolution_m metres per pixel and free_min
+/// (formats::read_plain_map). Throws UsageError when the resolution does not fit the kind.
+formats::RosMap load_map_argument(const std::string& path, double resolution_m, int free_min);
+
 }  // namespace indoormap::app

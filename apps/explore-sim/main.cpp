@@ -87,21 +87,6 @@ Args parse_args(int argc, char** argv) {
   return a;
 }
 
-/// The map: a map YAML, or a plain image with --resolution.
-formats::RosMap load_map(const Args& a) {
-  const fs::path mp = a.map_path;
-  const std::string ext = mp.extension().string();
-  if (ext == ".yaml" || ext == ".yml") {
-    if (a.resolution != 0.0)
-      throw UsageError("--resolution is for plain PNG/PGM maps; " + a.map_path + " is a map YAML");
-    return app::read_ros_map(mp);
-  }
-  if (!(a.resolution > 0))
-    throw UsageError("map " + a.map_path +
-                     " is an image: give its --resolution in metres per pixel");
-  return formats::read_plain_map(mp, a.resolution, a.free_min);
-}
-
 /// --start, or the documented default; start_rule says which.
 laser::Pose2d choose_start(const Args& a, const formats::RosMap& map,
                            const exploration::ExploreParams& p, std::string& start_rule) {
@@ -151,7 +136,7 @@ int run(int argc, char** argv) {
   if (a.map_path.empty()) throw UsageError("no map given: explore-sim MAP -o DIR (see --help)");
   if (a.out_dir.empty()) throw UsageError("no output directory given: use -o DIR");
   auto t0 = std::chrono::steady_clock::now();
-  formats::RosMap map = load_map(a);
+  formats::RosMap map = app::load_map_argument(a.map_path, a.resolution, a.free_min);
   if (cfg.unknown_is_obstacle)
     for (Cell& c : map.cells.data)
       if (c == Cell::kUnknown) c = Cell::kWall;

@@ -74,21 +74,6 @@ Args parse_args(int argc, char** argv) {
   return a;
 }
 
-/// The map of --map: a map YAML, or a plain image with --resolution.
-formats::RosMap load_map(const Args& a) {
-  const fs::path mp = a.map_path;
-  const std::string ext = mp.extension().string();
-  if (ext == ".yaml" || ext == ".yml") {
-    if (a.resolution != 0.0)
-      throw UsageError("--resolution is for plain PNG/PGM maps; " + a.map_path + " is a map YAML");
-    return app::read_ros_map(mp);
-  }
-  if (!(a.resolution > 0))
-    throw UsageError("--map " + a.map_path +
-                     " is an image: give its --resolution in metres per pixel");
-  return formats::read_plain_map(mp, a.resolution, a.free_min);
-}
-
 int run(int argc, char** argv) {
   const Args a = parse_args(argc, argv);
   if (a.exit_code) return *a.exit_code;
@@ -110,7 +95,7 @@ int run(int argc, char** argv) {
   ensure_writable_dir(out);
 
   auto t0 = std::chrono::steady_clock::now();
-  const formats::RosMap map = load_map(a);
+  const formats::RosMap map = app::load_map_argument(a.map_path, a.resolution, a.free_min);
   const double load_ms = ms_since(t0);
 
   t0 = std::chrono::steady_clock::now();
