@@ -1,6 +1,6 @@
 // scan_features: each detector on hand-made scans (rupture and breakpoint detection, the
 // iterative end-point fit, the TLS refit, walls, doors, corners and their typing, corridors),
-// then the accuracy targets on simulated scans with known geometry (fixed seeds).
+// the accuracy targets on simulated scans with known geometry (fixed seeds), and ICP.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "indoormap/scan_features/features.hpp"
+#include "indoormap/scan_features/icp.hpp"
 #include "indoormap/sim/scan_eval.hpp"
 #include "indoormap/sim/scan_scenes.hpp"
 
@@ -264,3 +265,47 @@ TEST(ScanFeaturesSim, AcceptanceTargetsOnSimulatedScans) {
 }
 
 }  // namespace
+
+// --- alignment ---------------------------------------------------------------------------------
+
+TEST(ScanFeaturesIcp, ProcrustesRecoversAKnownTransform) {
+  const laser::Pose2d t{0.3, -0.2, 0.25};
+  std::vector<V> src{{1, 0}, {2, 1}, {0, 3}, {-1, 1}}, dst;
+  for (const V& p : src) dst.push_back(t.transform(p));
+  const laser::Pose2d got = procrustes(src, dst);
+  EXPECT_NEAR(got.x_m, 0.3, 1e-12);
+  EXPECT_NEAR(got.y_m, -0.2, 1e-12);
+  EXPECT_NEAR(got.theta_rad, 0.25, 1e-12);
+  const laser::Pose2d rel = relative_pose({1, 2, 0.5}, laser::Pose2d{1, 2, 0.5}.compose(t));
+  EXPECT_NEAR(rel.x_m, 0.3, 1e-12);
+  EXPECT_NEAR(rel.theta_rad, 0.25, 1e-12);
+}
+
+TEST(ScanFeaturesIcp, BothVariantsRecoverTheMotionBetweenSimulatedScans) {
+  const sim::ScanScene scene = sim::random_scan_scene(42);
+  std::mt19937_64 rng(42);
+  const laser::Pose2d a = sim::random_pose(scene, 1.0, rng);
+  const laser::Pose2d motion{0.25, 0.1, 6.0 * kDeg};  // b in a's frame
+  const laser::Pose2d b = a.compose(motion);
+  sim::LaserModel m;
+  m.beams = 360;
+  const auto sa = sim::cast_scan(scene, a, m, rng), sb = sim::cast_scan(scene, b, m, rng);
+  for (IcpKind kind : {IcpKind::kPointToPoint, IcpKind::kPointToLine}) {
+    IcpParams p;
+    p.kind = kind;
+    const IcpResult r = align_scans(sa, sb, p);
+    EXPECT_TRUE(r.converged) << icp_kind_name(kind);
+    EXPECT_NEAR(r.transform.x_m, motion.x_m, 0.01) << icp_kind_name(kind);
+    EXPECT_NEAR(r.transform.y_m, motion.y_m, 0.01) << icp_kind_name(kind);
+    EXPECT_NEAR(r.transform.theta_rad, motion.theta_rad, 0.3 * kDeg) << icp_kind_name(kind);
+    EXPECT_GT(r.inlier_share, 0.8);
+    EXPECT_LT(r.rms_m, 0.03);
+  }
+}
+
+TEST(ScanFeaturesIcp, TooFewPointsIsAFailedAlignmentNotAnError) {
+  const auto s = ranges_scan({1, 1, 1}, 1.0 * kDeg);
+  const IcpResult r = align_scans(s, s, {});
+  EXPECT_FALSE(r.converged);
+  EXPECT_EQ(r.pairs, 0);
+}
