@@ -1,9 +1,11 @@
 // Corridors and crossings (docs/grid-areas.md, "Corridors and crossings").
 #include "corridors.hpp"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <queue>
 #include <opencv2/imgproc.hpp>
 
 #include "indoormap/areas/fan.hpp"
@@ -14,31 +16,43 @@ namespace {
 
 constexpr int kNb[8][2] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
 
-/// Skeleton cells at exactly k 8-steps (along the skeleton) from start, and all cells within k.
+/// Skeleton cells within path length k of start (steps of 1 and sqrt 2 along the skeleton), and
+/// the rim: the first cells at k or beyond on each way out.
 struct Reach {
   std::vector<cv::Point> rim;
   std::vector<cv::Point> within;
 };
-Reach skeleton_reach(const cv::Mat& skel, cv::Point start, int k, cv::Mat& seen) {
+Reach skeleton_reach(const cv::Mat& skel, cv::Point start, double k, cv::Mat& dist) {
+  // dist: CV_32F scratch of skel's size, all negative (unvisited) on entry and on return.
   Reach out;
-  std::vector<std::pair<cv::Point, int>> queue{{start, 0}};
-  seen.at<int>(start) = 1;
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const auto [p, dist] = queue[head];
-    out.within.push_back(p);
-    if (dist == k) {
+  using Item = std::pair<float, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  std::vector<cv::Point> touched{start};
+  dist.at<float>(start) = 0.0f;
+  queue.push({0.0f, start.y * skel.cols + start.x});
+  while (!queue.empty()) {
+    const auto [dp, idx] = queue.top();
+    queue.pop();
+    const cv::Point p(idx % skel.cols, idx / skel.cols);
+    if (dp > dist.at<float>(p)) continue;
+    if (dp >= k) {
       out.rim.push_back(p);
       continue;
     }
+    out.within.push_back(p);
     for (const auto& d : kNb) {
       const cv::Point q(p.x + d[0], p.y + d[1]);
       if (q.x < 0 || q.y < 0 || q.x >= skel.cols || q.y >= skel.rows) continue;
-      if (!skel.at<std::uint8_t>(q) || seen.at<int>(q)) continue;
-      seen.at<int>(q) = 1;
-      queue.push_back({q, dist + 1});
+      if (!skel.at<std::uint8_t>(q)) continue;
+      const float nd = dp + ((d[0] && d[1]) ? 1.41421356f : 1.0f);
+      float& dq = dist.at<float>(q);
+      if (dq >= 0.0f && dq <= nd) continue;
+      if (dq < 0.0f) touched.push_back(q);
+      dq = nd;
+      queue.push({nd, q.y * skel.cols + q.x});
     }
   }
-  for (const auto& p : out.within) seen.at<int>(p) = 0;
+  for (const auto& p : touched) dist.at<float>(p) = -1.0f;
   return out;
 }
 
@@ -93,12 +107,79 @@ struct Candidate {
   double priority = 0.0;  ///< larger first
 };
 
+/// A junction or corner: where its arms' centre lines meet, and each arm's outward direction.
+struct Junction {
+  Eigen::Vector2d centre;
+  std::vector<Eigen::Vector2d> out;
+};
+
+/// The arms' directions from their cells at path length k / 2 and k; the centre is the least-squares
+/// meeting point of their centre lines (the skeleton's own junction point lies off the centre:
+/// in a T it is up the stem, where the inscribed circle is largest).
+Junction junction(const cv::Mat& skel, const Candidate& cand, double k, cv::Mat& scratch) {
+  const auto near = arms(skeleton_reach(skel, cand.at, 0.5 * k, scratch).rim);
+  Junction j;
+  Eigen::Matrix2d a = Eigen::Matrix2d::Zero();
+  Eigen::Vector2d b = Eigen::Vector2d::Zero();
+  const Eigen::Vector2d p(cand.at.x, cand.at.y);
+  for (const auto& e : cand.arm_ends) {
+    const Eigen::Vector2d e1(e.x, e.y);
+    Eigen::Vector2d u = (e1 - p).normalized();
+    double best = 1e300;
+    for (const auto& f : near) {
+      const Eigen::Vector2d e2(f.x, f.y);
+      const double dist = std::abs((e1 - e2).norm() - 0.5 * k);
+      if ((e1 - e2).dot(u) > 0.0 && dist < best && dist < 0.25 * k) {
+        best = dist;
+        u = (e1 - e2).normalized();
+      }
+    }
+    j.out.push_back(u);
+    const Eigen::Matrix2d proj = Eigen::Matrix2d::Identity() - u * u.transpose();
+    a += proj;
+    b += proj * e1;
+  }
+  j.centre = std::abs(a.determinant()) > 1e-3 ? Eigen::Vector2d(a.inverse() * b) : p;
+  return j;
+}
+
+/// Marks as crossing `id` the cells of mask connected to the junction's centre (within
+/// max_dist) that lie no more than cut beyond the centre along every arm.
+void mark_crossing(const cv::Mat& mask, const Junction& j, double cut, double max_dist, int id,
+                   cv::Mat& crossing_of) {
+  auto inside = [&](int x, int y) {
+    const Eigen::Vector2d v = Eigen::Vector2d(x, y) - j.centre;
+    if (v.norm() > max_dist) return false;
+    for (const auto& u : j.out)
+      if (v.dot(u) > cut) return false;
+    return true;
+  };
+  const cv::Point c0(static_cast<int>(std::lround(j.centre.x())), static_cast<int>(std::lround(j.centre.y())));
+  if (c0.x < 0 || c0.y < 0 || c0.x >= mask.cols || c0.y >= mask.rows || !mask.at<std::uint8_t>(c0)) return;
+  std::vector<cv::Point> stack{c0};
+  cv::Mat seen(mask.size(), CV_8U, cv::Scalar(0));
+  seen.at<std::uint8_t>(c0) = 1;
+  while (!stack.empty()) {
+    const cv::Point p = stack.back();
+    stack.pop_back();
+    if (!crossing_of.at<int>(p)) crossing_of.at<int>(p) = id;
+    const cv::Point nb[4] = {{p.x + 1, p.y}, {p.x - 1, p.y}, {p.x, p.y + 1}, {p.x, p.y - 1}};
+    for (const auto& q : nb) {
+      if (q.x < 0 || q.y < 0 || q.x >= mask.cols || q.y >= mask.rows) continue;
+      if (seen.at<std::uint8_t>(q) || !mask.at<std::uint8_t>(q) || !inside(q.x, q.y)) continue;
+      seen.at<std::uint8_t>(q) = 1;
+      stack.push_back(q);
+    }
+  }
+}
+
 }  // namespace
 
 CorridorSplit split_corridors(const Grid<int>& pieces, int n, const Grid<std::uint8_t>& reach,
                               const Grid<std::uint8_t>& free, double cell_m,
                               const AreasParams& params) {
   const CorridorParams& cp = params.corridors;
+  (void)free;  // the fan-of-turns test runs on reach: the footprint's own free space
   const int w = pieces.width, h = pieces.height;
   std::vector<cv::Rect> box(n + 1);
   std::vector<bool> seen_label(n + 1, false);
@@ -152,7 +233,7 @@ CorridorSplit split_corridors(const Grid<int>& pieces, int n, const Grid<std::ui
     const int k = std::max(3, static_cast<int>(std::lround(width)));
     prune(skel, k);
     // Candidates: junctions (3+ arms k steps away) and corners (2 arms bent by corner_min_deg).
-    cv::Mat seen(crop.size(), CV_32S, cv::Scalar(0));
+    cv::Mat seen(crop.size(), CV_32F, cv::Scalar(-1.0f));
     std::vector<Candidate> cands;
     const double max_cos = std::cos((180.0 - cp.corner_min_deg) * std::numbers::pi / 180.0);
     for (int r = 0; r < skel.rows; ++r)
@@ -178,31 +259,28 @@ CorridorSplit split_corridors(const Grid<int>& pieces, int n, const Grid<std::ui
     }
     // Fan-of-turns check, arriving along each arm.
     cv::Mat crossing_of(crop.size(), CV_32S, cv::Scalar(0));
-    const int cut = std::max(1, static_cast<int>(std::lround(0.5 * width + cp.crossing_margin_m / cell_m)));
+    // The way's half width: the median clearance on the skeleton.
+    std::vector<float> on_skel;
+    for (int r = 0; r < skel.rows; ++r)
+      for (int c = 0; c < skel.cols; ++c)
+        if (skel.at<std::uint8_t>(r, c)) on_skel.push_back(d.at<float>(r, c));
+    if (on_skel.empty()) on_skel.push_back(static_cast<float>(0.5 * width));
+    std::nth_element(on_skel.begin(), on_skel.begin() + on_skel.size() / 2, on_skel.end());
+    const double half = on_skel[on_skel.size() / 2];
     int crossings = 0;
-    std::vector<int> crossing_ids;
     for (const auto& cand : kept) {
-      const Eigen::Vector2d at(cand.at.x + crop.x + 0.5, cand.at.y + crop.y + 0.5);
+      const Junction j = junction(skel, cand, k, seen);
+      const Eigen::Vector2d at(j.centre.x() + crop.x + 0.5, j.centre.y() + crop.y + 0.5);
       bool ok = false;
-      for (const auto& e : cand.arm_ends) {
-        const Eigen::Vector2d dir(cand.at.x - e.x, cand.at.y - e.y);
+      for (const auto& u : j.out)  // arriving along each arm: heading -u
         ok = ok || can_turn_aside(reach, cell_m, params.footprint, cp,
-                                  {at, std::atan2(dir.y(), dir.x())});
-      }
+                                  {at, std::atan2(-u.y(), -u.x())});
       out.checks.push_back({at, static_cast<int>(cand.arm_ends.size()), ok});
       if (!ok) continue;
       ++crossings;
-      for (const auto& q : skeleton_reach(skel, cand.at, cut, seen).within)
-        if (!crossing_of.at<int>(q)) crossing_of.at<int>(q) = crossings;
+      mark_crossing(mask, j, half + cp.crossing_margin_m / cell_m, 2.0 * width, crossings,
+                    crossing_of);
     }
-    (void)free;
-    // Each cell goes with its nearest skeleton cell.
-    cv::Mat inv = 1 - skel, dist, nearest;
-    cv::distanceTransform(inv, dist, nearest, cv::DIST_L2, cv::DIST_MASK_5, cv::DIST_LABEL_PIXEL);
-    std::vector<int> crossing_of_label(static_cast<std::size_t>(crop.area()) + 1, 0);
-    for (int r = 0; r < skel.rows; ++r)
-      for (int c = 0; c < skel.cols; ++c)
-        if (skel.at<std::uint8_t>(r, c)) crossing_of_label[nearest.at<int>(r, c)] = crossing_of.at<int>(r, c);
     std::vector<int> ids(crossings + 1, 0);
     for (int i = 1; i <= crossings; ++i) ids[i] = add(AreaKind::kCrossing);
     // The rest of the corridor: 4-connected pieces, each a corridor.
@@ -212,7 +290,7 @@ CorridorSplit split_corridors(const Grid<int>& pieces, int n, const Grid<std::ui
       for (int c = 0; c < crop.width; ++c) {
         if (!mask.at<std::uint8_t>(r, c)) continue;
         in_piece.at(c, r) = 1;
-        const int x = crossing_of_label[nearest.at<int>(r, c)];
+        const int x = crossing_of.at<int>(r, c);
         if (x) out.labels.at(c + crop.x, r + crop.y) = ids[x];
         else rest.at(c, r) = 1;
       }
