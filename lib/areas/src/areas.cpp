@@ -86,6 +86,17 @@ AreasResult split_areas(const Grid<Cell>& cells, const GridGeometry& geometry,
 
   detail::CorridorSplit split = detail::split_corridors(rooms, n, reach, free, cell_m, params);
   detail::keep_largest_pieces(split.labels, reach);
+  // No area smaller than the footprint: such pieces (cut-offs of crossings) go to neighbours.
+  {
+    const std::vector<int> size = detail::label_sizes(split.labels);
+    const double min_fp = params.footprint.robot_width_m * params.footprint.robot_length_m / (cell_m * cell_m);
+    Grid<int> before = split.labels;
+    for (int& v : split.labels.data)
+      if (v > 0 && size[v] < min_fp) v = 0;
+    detail::fill_unlabelled(split.labels, reach);
+    for (std::size_t i = 0; i < before.size(); ++i)
+      if (before.data[i] && !split.labels.data[i]) split.labels.data[i] = before.data[i];
+  }
   // Relabel 1..m, carrying the kinds (pieces split off by keep_largest_pieces are rooms' leftovers).
   std::vector<int> new_id;
   std::vector<AreaKind> kinds;

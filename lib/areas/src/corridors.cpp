@@ -294,7 +294,19 @@ CorridorSplit split_corridors(const Grid<int>& pieces, int n, const Grid<std::ui
         if (x) out.labels.at(c + crop.x, r + crop.y) = ids[x];
         else rest.at(c, r) = 1;
       }
-    cv::Mat rest_cc, rest8 = view(rest);
+    // Cells touching a crossing are left out of the pieces (and given back by the fill below):
+    // a one-cell bridge at a crossing's corner must not join two of its arms into one corridor.
+    Grid<int> rest_core = rest;
+    for (int r = 0; r < crop.height; ++r)
+      for (int c = 0; c < crop.width; ++c) {
+        if (!rest.at(c, r)) continue;
+        for (const auto& dn : kNb) {
+          const int cc = c + dn[0], rr = r + dn[1];
+          if (cc >= 0 && rr >= 0 && cc < crop.width && rr < crop.height && crossing_of.at<int>(rr, cc))
+            rest_core.at(c, r) = 0;
+        }
+      }
+    cv::Mat rest_cc, rest8 = view(rest_core);
     rest8.convertTo(rest8, CV_8U);
     const int ncc = cv::connectedComponents(rest8, rest_cc, 4, CV_32S);
     std::vector<int> cc_size(ncc, 0);
@@ -311,8 +323,16 @@ CorridorSplit split_corridors(const Grid<int>& pieces, int n, const Grid<std::ui
         if (!mask.at<std::uint8_t>(r, c)) continue;
         const int gid = out.labels.at(c + crop.x, r + crop.y);
         const int cc = rest_cc.at<int>(r, c);
-        local.at(c, r) = gid ? gid : (cc ? cc_id[cc] : 0);
+        local.at(c, r) = (gid || !cc) ? 0 : cc_id[cc];
       }
+    // The cells by the crossings go to the corridors first, then the crossings are put back.
+    Grid<std::uint8_t> rest_mask(crop.width, crop.height, 0);
+    for (std::size_t i = 0; i < rest.size(); ++i) rest_mask.data[i] = rest.data[i] ? 1 : 0;
+    fill_unlabelled(local, rest_mask);
+    for (int r = 0; r < crop.height; ++r)
+      for (int c = 0; c < crop.width; ++c)
+        if (mask.at<std::uint8_t>(r, c) && out.labels.at(c + crop.x, r + crop.y))
+          local.at(c, r) = out.labels.at(c + crop.x, r + crop.y);
     fill_unlabelled(local, in_piece);
     if (crossings == 0 && std::none_of(cc_id.begin(), cc_id.end(), [](int v) { return v; })) {
       const int id = add(AreaKind::kCorridor);
