@@ -32,7 +32,8 @@ const formats::RosMap* shared_map(int i) {
   static std::map<int, formats::RosMap> cache;
   auto it = cache.find(i);
   if (it != cache.end()) return &it->second;
-  const auto path = data_dir() / "room-segmentation-maps" / (std::string(kMaps[i]) + "_furnitures.png");
+  const auto path =
+      data_dir() / "room-segmentation-maps" / (std::string(kMaps[i]) + "_furnitures.png");
   if (!std::filesystem::exists(path)) return nullptr;
   return &cache.emplace(i, formats::read_plain_map(path, 0.05, 250)).first->second;
 }

@@ -199,7 +199,8 @@ areas::SegmentationScore shared_score(const std::filesystem::path& dir, const st
   const auto map = formats::read_plain_map(dir / (name + "_furnitures.png"), 0.05, 250);
   const auto gt = formats::read_plain_map(dir / (name + "_gt_segmentation.png"), 0.05, 250);
   Grid<std::uint8_t> grey(gt.cells.width, gt.cells.height, 0);
-  for (std::size_t i = 0; i < grey.size(); ++i) grey.data[i] = gt.cells.data[i] == Cell::kFree ? 255 : 0;
+  for (std::size_t i = 0; i < grey.size(); ++i)
+    grey.data[i] = gt.cells.data[i] == Cell::kFree ? 255 : 0;
   const areas::AreasResult r = areas::split_areas(map.cells, map.geometry, {});
   EXPECT_EQ(r.non_simple_polygons, 0) << name;
   EXPECT_EQ(r.graph_components, r.reachable_components) << name;

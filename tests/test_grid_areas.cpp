@@ -24,7 +24,9 @@ using indoormap::test::read_text;
 using indoormap::test::run_app;
 using nlohmann::json;
 
-bool empty_or_missing(const fs::path& dir) { return !fs::exists(dir) || fs::is_empty(dir); }
+bool empty_or_missing(const fs::path& dir) {
+  return !fs::exists(dir) || fs::is_empty(dir);
+}
 
 /// A generated floor as a plain PGM (255 free, 0 wall) in dir.
 fs::path floor_pgm(const fs::path& dir) {
@@ -34,7 +36,8 @@ fs::path floor_pgm(const fs::path& dir) {
   p.clutter_per_room = 3;
   const sim::AreaMap m = sim::make_area_map(sim::AreaMapShape::kFloor, p);
   Grid<std::uint8_t> grey(m.cells.width, m.cells.height, 0);
-  for (std::size_t i = 0; i < grey.size(); ++i) grey.data[i] = m.cells.data[i] == Cell::kFree ? 255 : 0;
+  for (std::size_t i = 0; i < grey.size(); ++i)
+    grey.data[i] = m.cells.data[i] == Cell::kFree ? 255 : 0;
   formats::write_pgm(dir / "floor.pgm", grey);
   return dir / "floor.pgm";
 }
@@ -52,12 +55,13 @@ TEST(GridAreas, FloorToEveryOutputAndTheSpeedMaskDecodesToTheLimits) {
   test::write_text(dir / "cfg.yaml",
                    "speed:\n  room_percent: 100\n  corridor_percent: 70\n  crossing_percent: 30\n");
   const fs::path out = dir / "out";
-  auto r = run_app("grid-areas", map.string() + " --resolution 0.05 -c " + (dir / "cfg.yaml").string() +
-                                     " -o " + out.string());
+  auto r = run_app("grid-areas", map.string() + " --resolution 0.05 -c " +
+                                     (dir / "cfg.yaml").string() + " -o " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* f : {"areas.geojson", "areas.json", "areas_labels.png", "areas.png", "summary.json",
-                        "speed_mask.pgm", "speed_mask.yaml", "speed_filter_info.yaml",
-                        "keepout_mask.pgm", "keepout_mask.yaml", "keepout_filter_info.yaml"})
+  for (const char* f :
+       {"areas.geojson", "areas.json", "areas_labels.png", "areas.png", "summary.json",
+        "speed_mask.pgm", "speed_mask.yaml", "speed_filter_info.yaml", "keepout_mask.pgm",
+        "keepout_mask.yaml", "keepout_filter_info.yaml"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
   const json areas = json::parse(read_text(out / "areas.json"));
   std::map<int, std::string> type;
@@ -100,7 +104,11 @@ TEST(GridAreas, FloorToEveryOutputAndTheSpeedMaskDecodesToTheLimits) {
     if (!labels.data[i]) continue;
     ASSERT_TRUE(type.count(labels.data[i])) << labels.data[i];
     const double occ = (255.0 - mask.data[i]) / 255.0;
-    const int value = occ >= occ_th ? 100 : occ <= free_th ? 0 : static_cast<int>(std::lround(100.0 * (occ - free_th) / (occ_th - free_th)));
+    const int value =
+        occ >= occ_th ? 100
+        : occ <= free_th
+            ? 0
+            : static_cast<int>(std::lround(100.0 * (occ - free_th) / (occ_th - free_th)));
     const double limit = value == 0 ? 100.0 : base + mult * value;  // 0: Nav2's "no limit"
     ASSERT_DOUBLE_EQ(limit, want.at(type[labels.data[i]])) << "cell " << i;
     ++checked;
@@ -130,13 +138,15 @@ TEST(GridAreas, PrintConfigReadsBack) {
 TEST(GridAreas, BadInputExits2AndFootprintThatFitsNowhereExits3WithoutOutput) {
   const fs::path dir = test::scratch_dir();
   test::write_text(dir / "text.png", "this is not an image\n");
-  auto r = run_app("grid-areas", (dir / "text.png").string() + " --resolution 0.05 -o " + (dir / "o1").string());
+  auto r = run_app("grid-areas",
+                   (dir / "text.png").string() + " --resolution 0.05 -o " + (dir / "o1").string());
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("text.png"), std::string::npos) << r.err;
   EXPECT_TRUE(empty_or_missing(dir / "o1"));
 
   formats::write_pgm(dir / "black.pgm", Grid<std::uint8_t>(40, 30, 0));
-  r = run_app("grid-areas", (dir / "black.pgm").string() + " --resolution 0.05 -o " + (dir / "o2").string());
+  r = run_app("grid-areas",
+              (dir / "black.pgm").string() + " --resolution 0.05 -o " + (dir / "o2").string());
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("no free cell"), std::string::npos) << r.err;
   EXPECT_TRUE(empty_or_missing(dir / "o2"));
@@ -163,8 +173,9 @@ TEST(GridAreas, BadInputExits2AndFootprintThatFitsNowhereExits3WithoutOutput) {
 TEST(GridAreas, ScoreOnASharedMap) {
   INDOORMAP_REQUIRE_DATA(data, "room-segmentation-maps");
   const fs::path out = test::scratch_dir() / "out";
-  auto r = run_app("grid-areas", (data / "office_d_furnitures.png").string() + " --resolution 0.05 --score " +
-                                     (data / "office_d_gt_segmentation.png").string() + " -q -o " + out.string());
+  auto r = run_app("grid-areas",
+                   (data / "office_d_furnitures.png").string() + " --resolution 0.05 --score " +
+                       (data / "office_d_gt_segmentation.png").string() + " -q -o " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json s = json::parse(read_text(out / "score.json"));
   EXPECT_GE(s["recall"].get<double>(), 0.98);

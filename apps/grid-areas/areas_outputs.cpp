@@ -8,8 +8,8 @@
 namespace indoormap::app {
 
 nlohmann::json score_json(const areas::SegmentationScore& s) {
-  return {{"recall", s.recall},          {"precision", s.precision},
-          {"true_rooms", s.true_rooms},  {"areas", s.areas},
+  return {{"recall", s.recall},           {"precision", s.precision},
+          {"true_rooms", s.true_rooms},   {"areas", s.areas},
           {"room_recall", s.room_recall}, {"area_precision", s.area_precision}};
 }
 
@@ -42,11 +42,11 @@ std::vector<std::string> write_grid_areas_outputs(const std::filesystem::path& d
   draw::write_areas_png(dir / "areas.png", r, run.map.cells, run.map.geometry,
                         std::filesystem::path(run.map_path).filename().string());
   formats::write_costmap_masks(dir, r, run.map.geometry, speed_percents(run.config));
-  std::vector<std::string> files = {"areas.geojson",      "areas.json",
-                                    "areas_labels.png",   "areas.png",
-                                    "speed_mask.pgm",     "speed_mask.yaml",
+  std::vector<std::string> files = {"areas.geojson",          "areas.json",
+                                    "areas_labels.png",       "areas.png",
+                                    "speed_mask.pgm",         "speed_mask.yaml",
                                     "speed_filter_info.yaml", "keepout_mask.pgm",
-                                    "keepout_mask.yaml",  "keepout_filter_info.yaml"};
+                                    "keepout_mask.yaml",      "keepout_filter_info.yaml"};
   if (run.score) {
     formats::write_json(dir / "score.json", score_json(*run.score));
     files.push_back("score.json");

@@ -59,7 +59,8 @@ Args parse_args(int argc, char** argv) {
   Args a;
   cli.add_option("map", a.map_path, "ROS map YAML, or a PNG / PGM image (then --resolution)");
   cli.add_option("-o,--out", a.out_dir, "Output directory (created if missing)");
-  cli.add_option("-c,--config", a.config_file, "YAML parameters (defaults: config/grid-areas.yaml)");
+  cli.add_option("-c,--config", a.config_file,
+                 "YAML parameters (defaults: config/grid-areas.yaml)");
   cli.add_option("--resolution", a.resolution_m, "Metres per pixel of a PNG / PGM map");
   cli.add_option("--score", a.truth_path,
                  "Ground-truth segmentation image (*_gt_segmentation.png): writes score.json");
@@ -84,7 +85,8 @@ Grid<int> read_truth(const std::string& path, const app::GridAreasRun& run) {
                                std::to_string(run.map.cells.width) + " x " +
                                std::to_string(run.map.cells.height));
   Grid<std::uint8_t> grey(gt.cells.width, gt.cells.height, 0);
-  for (std::size_t i = 0; i < grey.size(); ++i) grey.data[i] = gt.cells.data[i] == Cell::kFree ? 255 : 0;
+  for (std::size_t i = 0; i < grey.size(); ++i)
+    grey.data[i] = gt.cells.data[i] == Cell::kFree ? 255 : 0;
   return areas::truth_rooms(grey);
 }
 

@@ -12,8 +12,10 @@ bool footprint_free(const Grid<std::uint8_t>& free, double cell_m, const Footpri
   const double half_l = 0.5 * fp.robot_length_m / cell_m, half_w = 0.5 * fp.robot_width_m / cell_m;
   const Eigen::Vector2d fwd(std::cos(pose.heading_rad), std::sin(pose.heading_rad));
   const Eigen::Vector2d left(-fwd.y(), fwd.x());
-  // Samples at most half a cell apart cover every cell the rectangle overlaps by more than a sliver.
-  const int nl = static_cast<int>(std::ceil(2.0 * half_l / 0.5)), nw = static_cast<int>(std::ceil(2.0 * half_w / 0.5));
+  // Samples at most half a cell apart cover every cell the rectangle overlaps by more than a
+  // sliver.
+  const int nl = static_cast<int>(std::ceil(2.0 * half_l / 0.5)),
+            nw = static_cast<int>(std::ceil(2.0 * half_w / 0.5));
   for (int i = 0; i <= nl; ++i)
     for (int j = 0; j <= nw; ++j) {
       const Eigen::Vector2d q = pose.at + fwd * (-half_l + 2.0 * half_l * i / nl) +
@@ -43,7 +45,8 @@ CellPose along(const CellPose& p0, double turn_rad, double rad, double s) {
   }
   if (rad <= 0.0) p.heading_rad = p0.heading_rad + turn_rad;
   const double straight = s - on_arc;
-  if (straight > 0.0) p.at += straight * Eigen::Vector2d(std::cos(p.heading_rad), std::sin(p.heading_rad));
+  if (straight > 0.0)
+    p.at += straight * Eigen::Vector2d(std::cos(p.heading_rad), std::sin(p.heading_rad));
   return p;
 }
 

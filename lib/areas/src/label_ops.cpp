@@ -10,7 +10,8 @@ cv::Mat clearance(const Grid<std::uint8_t>& free) {
   // One obstacle cell of padding: the grid's edge is an obstacle.
   cv::Mat padded(free.height + 2, free.width + 2, CV_8U, cv::Scalar(0));
   for (int r = 0; r < free.height; ++r)
-    for (int c = 0; c < free.width; ++c) padded.at<std::uint8_t>(r + 1, c + 1) = free.at(c, r) ? 255 : 0;
+    for (int c = 0; c < free.width; ++c)
+      padded.at<std::uint8_t>(r + 1, c + 1) = free.at(c, r) ? 255 : 0;
   cv::Mat d;
   cv::distanceTransform(padded, d, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
   return d(cv::Rect(1, 1, free.width, free.height)).clone();

@@ -9,8 +9,12 @@
 namespace indoormap::areas::detail {
 
 /// OpenCV views of grid storage (row = grid row; no copy).
-inline cv::Mat view(Grid<std::uint8_t>& g) { return {g.height, g.width, CV_8U, g.data.data()}; }
-inline cv::Mat view(Grid<int>& g) { return {g.height, g.width, CV_32S, g.data.data()}; }
+inline cv::Mat view(Grid<std::uint8_t>& g) {
+  return {g.height, g.width, CV_8U, g.data.data()};
+}
+inline cv::Mat view(Grid<int>& g) {
+  return {g.height, g.width, CV_32S, g.data.data()};
+}
 
 /// Distance (cells, L2) from each free cell to the nearest non-free cell or the grid's edge.
 cv::Mat clearance(const Grid<std::uint8_t>& free);

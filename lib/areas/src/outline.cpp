@@ -126,7 +126,8 @@ void build_graph(AreasResult& r, const GridGeometry& g) {
     mean /= static_cast<double>(pts.size());
     Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
     for (const auto& p : pts) cov += (p - mean) * (p - mean).transpose();
-    const Eigen::Vector2d axis = (cov(0, 0) >= cov(1, 1)) ? Eigen::Vector2d(1, 0) : Eigen::Vector2d(0, 1);
+    const Eigen::Vector2d axis =
+        (cov(0, 0) >= cov(1, 1)) ? Eigen::Vector2d(1, 0) : Eigen::Vector2d(0, 1);
     Eigen::Vector2d dir = axis;
     if (cov.norm() > 0.0) {
       const double ang = 0.5 * std::atan2(2.0 * cov(0, 1), cov(0, 0) - cov(1, 1));

@@ -29,7 +29,8 @@ Grid<std::uint8_t> without_clutter(const Grid<std::uint8_t>& free, double max_ce
   Grid<std::uint8_t> open = free, obstacle(free.width, free.height, 0);
   for (std::size_t i = 0; i < free.size(); ++i) obstacle.data[i] = free.data[i] ? 0 : 1;
   cv::Mat cc, stats, centroids;
-  const int n = cv::connectedComponentsWithStats(detail::view(obstacle), cc, stats, centroids, 8, CV_32S);
+  const int n =
+      cv::connectedComponentsWithStats(detail::view(obstacle), cc, stats, centroids, 8, CV_32S);
   std::vector<bool> clutter(n, false);
   for (int i = 1; i < n; ++i) {
     const int x = stats.at<int>(i, cv::CC_STAT_LEFT), y = stats.at<int>(i, cv::CC_STAT_TOP);
@@ -48,7 +49,8 @@ Grid<std::uint8_t> without_clutter(const Grid<std::uint8_t>& free, double max_ce
 Grid<int> segment_rooms(const Grid<std::uint8_t>& free_in, double cell_m, const RoomParams& p,
                         int* count) {
   validate(p);
-  const Grid<std::uint8_t> free = without_clutter(free_in, p.clutter_max_area_m2 / (cell_m * cell_m));
+  const Grid<std::uint8_t> free =
+      without_clutter(free_in, p.clutter_max_area_m2 / (cell_m * cell_m));
   const int w = free.width, h = free.height;
   const cv::Mat d = detail::clearance(free);
   std::vector<std::pair<float, int>> order;

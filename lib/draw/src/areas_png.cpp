@@ -11,18 +11,19 @@ namespace indoormap::draw {
 namespace {
 
 constexpr auto kFont = cv::FONT_HERSHEY_SIMPLEX;
-const cv::Scalar kCorridor(230, 170, 90);   // BGR: blue
-const cv::Scalar kCrossing(40, 140, 255);   // orange
-const cv::Scalar kNarrow(200, 200, 200);    // light grey
-const cv::Scalar kDoor(40, 170, 40);        // green
+const cv::Scalar kCorridor(230, 170, 90);  // BGR: blue
+const cv::Scalar kCrossing(40, 140, 255);  // orange
+const cv::Scalar kNarrow(200, 200, 200);   // light grey
+const cv::Scalar kDoor(40, 170, 40);       // green
 const cv::Scalar kBorder(70, 70, 70);
 
 /// A pastel tint per room id (golden-angle hues), never blue or orange.
 cv::Vec3b room_tint(int id) {
   const double hue = std::fmod(id * 137.508, 360.0);
   // Skip the corridor / crossing hues: 20-45 (orange) and 200-240 (blue).
-  const double h = hue < 20.0 ? hue : (hue < 200.0 ? 45.0 + (hue - 20.0) * 155.0 / 180.0
-                                                    : 240.0 + (hue - 200.0) * 120.0 / 160.0);
+  const double h = hue < 20.0 ? hue
+                              : (hue < 200.0 ? 45.0 + (hue - 20.0) * 155.0 / 180.0
+                                             : 240.0 + (hue - 200.0) * 120.0 / 160.0);
   cv::Mat hsv(1, 1, CV_8UC3, cv::Scalar(h / 2.0, 70, 245)), bgr;
   cv::cvtColor(hsv, bgr, cv::COLOR_HSV2BGR);
   return bgr.at<cv::Vec3b>(0, 0);
@@ -61,10 +62,10 @@ void write_areas_png(const std::filesystem::path& path, const areas::AreasResult
     for (int x = 0; x < r.labels.width; ++x) {
       const int a = r.labels.at(x, y);
       if (!a) continue;
-      const bool edge = (x + 1 < r.labels.width && r.labels.at(x + 1, y) && r.labels.at(x + 1, y) != a) ||
-                        (y + 1 < r.labels.height && r.labels.at(x, y + 1) && r.labels.at(x, y + 1) != a);
-      if (edge)
-        cv::rectangle(scaled, cv::Rect(x * k, (h - 1 - y) * k, k, k), kBorder, cv::FILLED);
+      const bool edge =
+          (x + 1 < r.labels.width && r.labels.at(x + 1, y) && r.labels.at(x + 1, y) != a) ||
+          (y + 1 < r.labels.height && r.labels.at(x, y + 1) && r.labels.at(x, y + 1) != a);
+      if (edge) cv::rectangle(scaled, cv::Rect(x * k, (h - 1 - y) * k, k, k), kBorder, cv::FILLED);
     }
   cv::Mat img(title_h + h * k + legend_h, std::max(w * k, 640), CV_8UC3, cv::Scalar(255, 255, 255));
   scaled.copyTo(img(cv::Rect(0, title_h, w * k, h * k)));
@@ -73,7 +74,9 @@ void write_areas_png(const std::filesystem::path& path, const areas::AreasResult
     cv::line(img, frame.to_px(d.end0_m), frame.to_px(d.end1_m), kDoor, std::max(2, k), cv::LINE_AA);
   int rooms = 0, corridors = 0, crossings = 0;
   for (const auto& a : r.areas)
-    (a.kind == areas::AreaKind::kRoom ? rooms : a.kind == areas::AreaKind::kCorridor ? corridors : crossings)++;
+    (a.kind == areas::AreaKind::kRoom       ? rooms
+     : a.kind == areas::AreaKind::kCorridor ? corridors
+                                            : crossings)++;
   const std::string caption = title + "  (" + std::to_string(rooms) + " rooms, " +
                               std::to_string(corridors) + " corridors, " +
                               std::to_string(crossings) + " crossings)";

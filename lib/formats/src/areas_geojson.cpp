@@ -12,7 +12,9 @@ namespace {
 
 using nlohmann::ordered_json;
 
-ordered_json point(const Eigen::Vector2d& p) { return ordered_json::array({p.x(), p.y()}); }
+ordered_json point(const Eigen::Vector2d& p) {
+  return ordered_json::array({p.x(), p.y()});
+}
 
 ordered_json ring(const Polygon& poly) {
   ordered_json j = ordered_json::array();
@@ -70,7 +72,8 @@ ordered_json areas_json(const areas::AreasResult& r) {
                     {"neighbours", a.neighbours}});
     nodes.push_back(a.id);
   }
-  for (const areas::Door& d : r.doors) edges.push_back({{"a", d.a}, {"b", d.b}, {"door", door_json(d)}});
+  for (const areas::Door& d : r.doors)
+    edges.push_back({{"a", d.a}, {"b", d.b}, {"door", door_json(d)}});
   for (const auto& c : r.crossing_checks)
     checks.push_back({{"at_m", point(c.at_m)}, {"arms", c.arms}, {"confirmed", c.confirmed}});
   return {{"areas", list},

@@ -46,12 +46,11 @@ void write_filter_info(const std::filesystem::path& path, int type, const std::s
 }
 
 void write_mask_yaml(const std::filesystem::path& path, const std::string& image,
-                     const GridGeometry& g, const std::string& mode, double occupied,
-                     double free) {
+                     const GridGeometry& g, const std::string& mode, double occupied, double free) {
   std::ostringstream s;
   s.precision(10);
-  s << "image: " << image << "\nmode: " << mode << "\nresolution: " << g.cell_m()
-    << "\norigin: [" << g.origin_m().x() << ", " << g.origin_m().y() << ", 0]\n"
+  s << "image: " << image << "\nmode: " << mode << "\nresolution: " << g.cell_m() << "\norigin: ["
+    << g.origin_m().x() << ", " << g.origin_m().y() << ", 0]\n"
     << "negate: 0\noccupied_thresh: " << occupied << "\nfree_thresh: " << free << "\n";
   write_file_atomic(path, s.str());
 }

@@ -39,7 +39,9 @@ Design design(AreaMapShape shape, double w, double a) {
   using enum AreaTruth;
   Design d;
   switch (shape) {
-    case AreaMapShape::kStraight: d.boxes.push_back(box(0, 0, 2 * a + w, w, kCorridor)); break;
+    case AreaMapShape::kStraight:
+      d.boxes.push_back(box(0, 0, 2 * a + w, w, kCorridor));
+      break;
     case AreaMapShape::kCorner:
       d.boxes.push_back(box(0, 0, a + w, w, kCorridor));
       d.boxes.push_back(box(a, 0, a + w, a + w, kCorridor));
@@ -139,8 +141,9 @@ AreaMap make_area_map(AreaMapShape shape, const AreaMapParams& p) {
     for (int r = 1; r + 1 < n; ++r)
       for (int c = 1; c + 1 < n; ++c) {
         if (before.at(c, r) != Cell::kFree) continue;
-        const bool by_wall = before.at(c + 1, r) != Cell::kFree || before.at(c - 1, r) != Cell::kFree ||
-                             before.at(c, r + 1) != Cell::kFree || before.at(c, r - 1) != Cell::kFree;
+        const bool by_wall =
+            before.at(c + 1, r) != Cell::kFree || before.at(c - 1, r) != Cell::kFree ||
+            before.at(c, r + 1) != Cell::kFree || before.at(c, r - 1) != Cell::kFree;
         if (by_wall && u(rng) < p.wall_noise) {
           m.cells.at(c, r) = Cell::kWall;
           m.truth.at(c, r) = 0;

@@ -22,9 +22,9 @@ struct Area {
   AreaKind kind = AreaKind::kRoom;
   int cells = 0;
   double area_m2 = 0.0;
-  Polygon outline_m;               ///< counter-clockwise outer ring, map frame, no closing vertex
-  std::vector<Polygon> holes_m;    ///< clockwise interior rings (obstacles of at least min area)
-  std::vector<int> neighbours;     ///< ids of the areas it shares a border with, ascending
+  Polygon outline_m;             ///< counter-clockwise outer ring, map frame, no closing vertex
+  std::vector<Polygon> holes_m;  ///< clockwise interior rings (obstacles of at least min area)
+  std::vector<int> neighbours;   ///< ids of the areas it shares a border with, ascending
 };
 
 /// The border between two areas: the end points of their shared boundary (map frame).
@@ -38,7 +38,7 @@ struct Door {
 /// A crossing candidate and what the fan-of-turns test said (kept for the docs and tests).
 struct CrossingCheck {
   Eigen::Vector2d at_m = Eigen::Vector2d::Zero();
-  int arms = 0;          ///< 3+: junction, 2: corner
+  int arms = 0;  ///< 3+: junction, 2: corner
   bool confirmed = false;
 };
 

@@ -20,10 +20,10 @@ enum class AreaTruth : std::uint8_t { kNone = 0, kRoom = 1, kCorridor = 2, kCros
 struct AreaMapParams {
   double cell_m = 0.05;
   double corridor_width_m = 1.6;
-  double arm_length_m = 6.0;      ///< length of each way beyond a crossing
-  double rotation_deg = 0.0;      ///< the design rotated counter-clockwise about its centre
-  double wall_noise = 0.0;        ///< probability that a free cell next to a wall is an obstacle
-  int clutter_per_room = 0;       ///< small boxes (0.2-0.4 m) in each room
+  double arm_length_m = 6.0;  ///< length of each way beyond a crossing
+  double rotation_deg = 0.0;  ///< the design rotated counter-clockwise about its centre
+  double wall_noise = 0.0;    ///< probability that a free cell next to a wall is an obstacle
+  int clutter_per_room = 0;   ///< small boxes (0.2-0.4 m) in each room
   std::uint32_t seed = 1;
 };
 /// Throws UsageError naming the field.
@@ -32,7 +32,7 @@ void validate(const AreaMapParams& p);
 struct AreaMap {
   Grid<Cell> cells;  ///< kFree or kWall
   GridGeometry geometry;
-  Grid<std::uint8_t> truth;                ///< AreaTruth per cell
+  Grid<std::uint8_t> truth;                  ///< AreaTruth per cell
   std::vector<Eigen::Vector2d> crossings_m;  ///< centre of each junction / corner (map frame)
 };
 
