@@ -1,0 +1,109 @@
+#include "indoormap/formats/areas_geojson.hpp"
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "indoormap/core/atomic_file.hpp"
+#include "indoormap/core/errors.hpp"
+#include "indoormap/formats/json.hpp"
+
+namespace indoormap::formats {
+namespace {
+
+using nlohmann::ordered_json;
+
+ordered_json point(const Eigen::Vector2d& p) {
+  return ordered_json::array({p.x(), p.y()});
+}
+
+ordered_json ring(const Polygon& poly) {
+  ordered_json j = ordered_json::array();
+  for (const auto& p : poly) j.push_back(point(p));
+  if (!poly.empty()) j.push_back(point(poly.front()));
+  return j;
+}
+
+ordered_json door_json(const areas::Door& d) {
+  return {{"between", {d.a, d.b}},
+          {"from", point(d.end0_m)},
+          {"to", point(d.end1_m)},
+          {"width_m", d.width_m},
+          {"shared_cells", d.shared_cells}};
+}
+
+}  // namespace
+
+ordered_json areas_geojson(const areas::AreasResult& r) {
+  ordered_json features = ordered_json::array();
+  for (const areas::Area& a : r.areas) {
+    if (a.outline_m.size() < 3) continue;
+    ordered_json rings = ordered_json::array({ring(a.outline_m)});
+    for (const auto& h : a.holes_m) rings.push_back(ring(h));
+    features.push_back({{"type", "Feature"},
+                        {"geometry", {{"type", "Polygon"}, {"coordinates", rings}}},
+                        {"properties",
+                         {{"type", std::string(areas::to_string(a.kind))},
+                          {"id", a.id},
+                          {"area_m2", a.area_m2},
+                          {"connects_to", a.neighbours}}}});
+  }
+  for (const areas::Door& d : r.doors)
+    features.push_back(
+        {{"type", "Feature"},
+         {"geometry",
+          {{"type", "LineString"}, {"coordinates", {point(d.end0_m), point(d.end1_m)}}}},
+         {"properties", {{"type", "door"}, {"between", {d.a, d.b}}, {"width_m", d.width_m}}}});
+  return {{"type", "FeatureCollection"}, {"features", features}};
+}
+
+void write_areas_geojson(const std::filesystem::path& path, const areas::AreasResult& r) {
+  write_json(path, areas_geojson(r));
+}
+
+ordered_json areas_json(const areas::AreasResult& r) {
+  ordered_json list = ordered_json::array(), nodes = ordered_json::array(),
+               edges = ordered_json::array(), checks = ordered_json::array();
+  for (const areas::Area& a : r.areas) {
+    list.push_back({{"id", a.id},
+                    {"type", std::string(areas::to_string(a.kind))},
+                    {"area_m2", a.area_m2},
+                    {"cells", a.cells},
+                    {"holes", a.holes_m.size()},
+                    {"neighbours", a.neighbours}});
+    nodes.push_back(a.id);
+  }
+  for (const areas::Door& d : r.doors)
+    edges.push_back({{"a", d.a}, {"b", d.b}, {"door", door_json(d)}});
+  for (const auto& c : r.crossing_checks)
+    checks.push_back({{"at_m", point(c.at_m)}, {"arms", c.arms}, {"confirmed", c.confirmed}});
+  return {{"areas", list},
+          {"graph", {{"nodes", nodes}, {"edges", edges}, {"components", r.graph_components}}},
+          {"crossing_checks", checks},
+          {"free_cells", r.free_cells},
+          {"reachable_cells", r.reachable_cells},
+          {"reachable_components", r.reachable_components},
+          {"non_simple_polygons", r.non_simple_polygons}};
+}
+
+void write_labels_png(const std::filesystem::path& path, const Grid<std::uint16_t>& labels) {
+  cv::Mat img(labels.height, labels.width, CV_16U);
+  for (int r = 0; r < labels.height; ++r)
+    for (int c = 0; c < labels.width; ++c)
+      img.at<std::uint16_t>(labels.height - 1 - r, c) = labels.at(c, r);
+  std::vector<unsigned char> bytes;
+  if (!cv::imencode(".png", img, bytes)) throw OutputError(path.string(), "PNG encoding failed");
+  write_file_atomic(path, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+}
+
+Grid<std::uint16_t> read_labels_png(const std::filesystem::path& path) {
+  const cv::Mat img = cv::imread(path.string(), cv::IMREAD_ANYDEPTH | cv::IMREAD_GRAYSCALE);
+  if (img.empty()) throw InputError(path.string(), "not a readable PNG");
+  cv::Mat img16;
+  img.convertTo(img16, CV_16U);
+  Grid<std::uint16_t> g(img.cols, img.rows, 0);
+  for (int r = 0; r < img.rows; ++r)
+    for (int c = 0; c < img.cols; ++c) g.at(c, img.rows - 1 - r) = img16.at<std::uint16_t>(r, c);
+  return g;
+}
+
+}  // namespace indoormap::formats
