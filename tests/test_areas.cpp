@@ -12,6 +12,7 @@
 #include "indoormap/areas/fan.hpp"
 #include "indoormap/areas/rooms.hpp"
 #include "indoormap/areas/score.hpp"
+#include "indoormap/core/cell_rings.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/formats/ros_map.hpp"
 #include "indoormap/sim/area_maps.hpp"
@@ -105,12 +106,84 @@ TEST(Rooms, TwoRoomsBehindADoorAreTwoAndAWideOpeningJoins) {
   EXPECT_EQ(n, 2);
 }
 
+TEST(CellRings, PinchedCellsGiveSimpleRingsThatDoNotTouch) {
+  // Row 0 (bottom) to row 2:  X.X / .X. / X.X  plus a bar joining the left column: the cells
+  // touch only at corners except along column 0.
+  const std::vector<std::string> rows = {"XX.X", "X.X.", "XX.X"};  // row 0 first
+  auto member = [&](int c, int r) { return rows[r][c] == 'X'; };
+  const CellRings rings = trace_cell_rings(0, 0, 4, 3, member);
+  // Pieces (4-connected): the left C (5 cells), the centre cell, the two right cells.
+  ASSERT_EQ(rings.outer.size(), 4u);
+  // The empty cell (1, 1) is no hole: it reaches the outside through its corners.
+  EXPECT_TRUE(rings.holes.empty());
+  double area = 0.0;
+  for (const auto& ring : rings.outer) {
+    EXPECT_TRUE(is_simple(ring));
+    area += signed_area(ring);
+  }
+  EXPECT_NEAR(area, 8.0, 0.1);  // 8 cells, less the slivers of the pinch offsets (0.01 cell)
+  // The pinch vertices are moved apart: no vertex is shared by two rings.
+  for (std::size_t i = 0; i < rings.outer.size(); ++i)
+    for (std::size_t j = i + 1; j < rings.outer.size(); ++j)
+      for (const auto& p : rings.outer[i])
+        for (const auto& q : rings.outer[j]) EXPECT_GT((p - q).norm(), 1e-3);
+}
+
+TEST(CellRings, RingWithAHoleAndCollinearVerticesRemoved) {
+  // A 4 x 4 block with a 2 x 2 hole: outer square (4 vertices), hole square (4 vertices).
+  // (member is asked in the box's own cell coordinates, from (10, 20))
+  auto member = [](int c, int r) { return !(c >= 11 && c <= 12 && r >= 21 && r <= 22); };
+  const CellRings rings = trace_cell_rings(10, 20, 4, 4, member);
+  ASSERT_EQ(rings.outer.size(), 1u);
+  ASSERT_EQ(rings.holes.size(), 1u);
+  EXPECT_EQ(rings.outer[0].size(), 4u);
+  EXPECT_EQ(rings.holes[0].size(), 4u);
+  EXPECT_DOUBLE_EQ(signed_area(rings.outer[0]), 16.0);
+  EXPECT_DOUBLE_EQ(signed_area(rings.holes[0]), -4.0);
+  const auto [lo, hi] = bounds(rings.outer[0]);
+  EXPECT_EQ(lo, Eigen::Vector2d(10, 20));
+  EXPECT_EQ(hi, Eigen::Vector2d(14, 24));
+  // An empty cell touching the outside at a corner only is part of the outside: one ring,
+  // which passes the shared corner twice, at two points split apart, and stays simple.
+  auto notch = [](int c, int r) { return !(c == 1 && r == 1) && !(c == 0 && r == 0); };
+  const CellRings r2 = trace_cell_rings(0, 0, 3, 3, notch);
+  ASSERT_EQ(r2.outer.size(), 1u);
+  EXPECT_TRUE(r2.holes.empty());
+  EXPECT_TRUE(is_simple(r2.outer[0]));
+  EXPECT_NEAR(signed_area(r2.outer[0]), 7.0, 0.1);
+  int near_pinch = 0;
+  for (const auto& p : r2.outer[0]) near_pinch += (p - Eigen::Vector2d(1, 1)).norm() < 0.1;
+  EXPECT_EQ(near_pinch, 2);
+}
+
 struct Generated {
   sim::AreaMapShape shape;
   double width_m, rotation_deg, noise;
   int clutter;
   std::uint32_t seed;
 };
+
+/// Every polygon covers exactly its area's cells: a cell centre lies inside area a's outline and
+/// outside its holes exactly when the cell is labelled a, or is an unlabelled cell of a hole too
+/// small to keep (min_hole_cells). So polygons do not overlap and leave no labelled cell out.
+void expect_polygons_cover_labels(const areas::AreasResult& r, const GridGeometry& g,
+                                  const std::string& what) {
+  int wrong = 0;
+  for (const auto& a : r.areas) {
+    ASSERT_TRUE(is_simple(a.outline_m)) << what << ": area " << a.id;
+    const auto [lo, hi] = bounds(a.outline_m);
+    const CellIndex c0 = g.cell_of(lo), c1 = g.cell_of(hi);
+    for (int row = std::max(0, c0.row - 1); row <= std::min(g.height() - 1, c1.row + 1); ++row)
+      for (int col = std::max(0, c0.col - 1); col <= std::min(g.width() - 1, c1.col + 1); ++col) {
+        const Eigen::Vector2d p = g.center_of({col, row});
+        bool in = contains(a.outline_m, p);
+        for (const auto& h : a.holes_m) in = in && !contains(h, p);
+        const int l = r.labels.at(col, row);
+        if (in ? (l != a.id && l != 0) : l == a.id) ++wrong;
+      }
+  }
+  EXPECT_EQ(wrong, 0) << what << ": cells where the polygons and the labels disagree";
+}
 
 /// Corridor and crossing pixel precision, every crossing centre in a crossing, and the
 /// polygons, coverage and graph, on one generated map.
@@ -151,8 +224,7 @@ void check_generated(const Generated& gcase) {
     ASSERT_GT(id, 0);
     EXPECT_EQ(r.areas[id - 1].kind, AreaKind::kCrossing) << "crossing at " << x.transpose();
   }
-  EXPECT_EQ(r.non_simple_polygons, 0);
-  for (const auto& a : r.areas) EXPECT_TRUE(is_simple(a.outline_m)) << "area " << a.id;
+  expect_polygons_cover_labels(r, m.geometry, "generated map");
   // The areas cover what the footprint reaches, and the graph is connected where it is.
   int labelled = 0;
   for (auto v : r.labels.data) labelled += v > 0;
@@ -202,7 +274,7 @@ areas::SegmentationScore shared_score(const std::filesystem::path& dir, const st
   for (std::size_t i = 0; i < grey.size(); ++i)
     grey.data[i] = gt.cells.data[i] == Cell::kFree ? 255 : 0;
   const areas::AreasResult r = areas::split_areas(map.cells, map.geometry, {});
-  EXPECT_EQ(r.non_simple_polygons, 0) << name;
+  expect_polygons_cover_labels(r, map.geometry, name);
   EXPECT_EQ(r.graph_components, r.reachable_components) << name;
   for (const auto& a : r.areas)
     EXPECT_GE(a.area_m2, 0.5 * 0.6) << name << ": area " << a.id << " smaller than the footprint";
@@ -221,6 +293,20 @@ TEST(SharedMaps, RoomScoresOnThreeFurnishedMaps) {
     const auto s = shared_score(dir, c.name);
     EXPECT_GE(s.recall, c.recall) << c.name;
     EXPECT_GE(s.precision, c.precision) << c.name;
+  }
+}
+
+TEST(SharedMaps, RawSlamMapsExactSimplePolygonsAndNoAreaBelowTheFootprint) {
+  INDOORMAP_REQUIRE_DATA(dir, "room-segmentation-maps");
+  const areas::AreasParams params;
+  const double footprint_m2 = params.footprint.robot_width_m * params.footprint.robot_length_m;
+  for (const char* name : {"freiburg_building79", "intel_map"}) {
+    const auto map = formats::read_plain_map(dir / (std::string(name) + ".png"), 0.05, 250);
+    const areas::AreasResult r = areas::split_areas(map.cells, map.geometry, params);
+    ASSERT_FALSE(r.areas.empty()) << name;
+    expect_polygons_cover_labels(r, map.geometry, name);
+    EXPECT_EQ(r.graph_components, r.reachable_components) << name;
+    for (const auto& a : r.areas) EXPECT_GE(a.area_m2, footprint_m2) << name << ": area " << a.id;
   }
 }
 

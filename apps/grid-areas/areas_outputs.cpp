@@ -24,8 +24,7 @@ nlohmann::json areas_summary_json(const GridAreasRun& run) {
                       {"free_cells", run.result.free_cells},
                       {"reachable_cells", run.result.reachable_cells},
                       {"reachable_components", run.result.reachable_components},
-                      {"graph_components", run.result.graph_components},
-                      {"non_simple_polygons", run.result.non_simple_polygons}};
+                      {"graph_components", run.result.graph_components}};
   if (run.score)
     j["score"] = {{"truth", *run.truth_path},
                   {"recall", run.score->recall},

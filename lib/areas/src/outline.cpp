@@ -1,4 +1,4 @@
-// Outline polygons (cv::findContours of each area's mask), doors and the area graph.
+// Outline polygons (the cell edges around each area), doors and the area graph.
 #include "outline.hpp"
 
 #include <algorithm>
@@ -6,26 +6,16 @@
 #include <numeric>
 #include <opencv2/imgproc.hpp>
 
+#include "indoormap/core/cell_rings.hpp"
+
 namespace indoormap::areas::detail {
 namespace {
 
-Polygon to_map(const std::vector<cv::Point>& ring, const GridGeometry& g, cv::Point offset) {
+/// A ring in map metres.
+Polygon to_map(const CellRing& ring, const GridGeometry& g) {
   Polygon p;
   p.reserve(ring.size());
-  for (const auto& q : ring)
-    p.push_back(g.from_cell_coords({q.x + offset.x + 0.5, q.y + offset.y + 0.5}));
-  return p;
-}
-
-/// Simplified ring (Douglas-Peucker, 0.7 cell), the raw ring when the simplified one is not simple.
-Polygon ring_polygon(const std::vector<cv::Point>& raw, const GridGeometry& g, cv::Point offset,
-                     bool ccw, int& non_simple) {
-  std::vector<cv::Point> simple;
-  cv::approxPolyDP(raw, simple, 0.7, true);
-  Polygon p = to_map(simple, g, offset);
-  if (p.size() < 3 || !is_simple(p)) p = to_map(raw, g, offset);
-  if ((signed_area(p) > 0.0) != ccw) std::reverse(p.begin(), p.end());
-  if (p.size() < 3 || !is_simple(p)) ++non_simple;
+  for (const auto& q : ring) p.push_back(g.from_cell_coords(q));
   return p;
 }
 
@@ -73,28 +63,18 @@ void build_outlines(AreasResult& r, const GridGeometry& g, int min_hole_cells) {
     a.area_m2 = a.cells * cell_area;
     if (!a.cells) continue;
     const cv::Rect b = box[a.id];
-    const cv::Rect crop(b.x - 1, b.y - 1, b.width + 2, b.height + 2);
-    cv::Mat mask(crop.size(), CV_8U, cv::Scalar(0));
-    for (int y = b.y; y < b.y + b.height; ++y)
-      for (int x = b.x; x < b.x + b.width; ++x)
-        if (lab.at(x, y) == a.id) mask.at<std::uint8_t>(y - crop.y, x - crop.x) = 255;
-    std::vector<std::vector<cv::Point>> rings;
-    std::vector<cv::Vec4i> tree;
-    cv::findContours(mask, rings, tree, cv::RETR_CCOMP, cv::CHAIN_APPROX_NONE);
-    // The outer ring of largest area (areas are one 4-connected piece; 8-connected contours may
-    // still see more when a piece touches itself diagonally).
-    int best = -1;
-    double best_area = -1.0;
-    for (int i = 0; i < static_cast<int>(rings.size()); ++i)
-      if (tree[i][3] < 0 && std::abs(cv::contourArea(rings[i])) > best_area) {
-        best = i;
-        best_area = std::abs(cv::contourArea(rings[i]));
-      }
-    if (best < 0) continue;
-    a.outline_m = ring_polygon(rings[best], g, crop.tl(), true, r.non_simple_polygons);
-    for (int c = tree[best][2]; c >= 0; c = tree[c][0])
-      if (std::abs(cv::contourArea(rings[c])) >= min_hole_cells)
-        a.holes_m.push_back(ring_polygon(rings[c], g, crop.tl(), false, r.non_simple_polygons));
+    // The cells' own edges (cell_rings.hpp): neighbouring areas share their borders exactly.
+    const CellRings rings = trace_cell_rings(b.x, b.y, b.width, b.height,
+                                             [&](int x, int y) { return lab.at(x, y) == a.id; });
+    // The outer ring of largest area (an area is one 4-connected piece; should it not be, its
+    // smaller pieces get no polygon of their own).
+    const CellRing* outer = nullptr;
+    for (const auto& ring : rings.outer)
+      if (!outer || signed_area(ring) > signed_area(*outer)) outer = &ring;
+    if (!outer) continue;
+    a.outline_m = to_map(*outer, g);
+    for (const auto& hole : rings.holes)
+      if (-signed_area(hole) >= min_hole_cells) a.holes_m.push_back(to_map(hole, g));
   }
 }
 

@@ -81,8 +81,7 @@ ordered_json areas_json(const areas::AreasResult& r) {
           {"crossing_checks", checks},
           {"free_cells", r.free_cells},
           {"reachable_cells", r.reachable_cells},
-          {"reachable_components", r.reachable_components},
-          {"non_simple_polygons", r.non_simple_polygons}};
+          {"reachable_components", r.reachable_components}};
 }
 
 void write_labels_png(const std::filesystem::path& path, const Grid<std::uint16_t>& labels) {

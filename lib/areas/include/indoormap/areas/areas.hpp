@@ -22,7 +22,9 @@ struct Area {
   AreaKind kind = AreaKind::kRoom;
   int cells = 0;
   double area_m2 = 0.0;
-  Polygon outline_m;             ///< counter-clockwise outer ring, map frame, no closing vertex
+  /// Counter-clockwise outer ring along the cells' edges, map frame, no closing vertex: simple,
+  /// and sharing its border exactly with the neighbouring areas' rings (core/cell_rings.hpp).
+  Polygon outline_m;
   std::vector<Polygon> holes_m;  ///< clockwise interior rings (obstacles of at least min area)
   std::vector<int> neighbours;   ///< ids of the areas it shares a border with, ascending
 };
@@ -52,7 +54,6 @@ struct AreasResult {
   int reachable_cells = 0;
   int reachable_components = 0;
   int graph_components = 0;
-  int non_simple_polygons = 0;  ///< outlines or holes that failed is_simple (should be 0)
 };
 
 /// Splits the free cells (Cell::kFree) of a map into areas. Throws UsageError on bad parameters.
