@@ -368,7 +368,7 @@ INSTANTIATE_TEST_SUITE_P(
                 "keys 'free_thresh' <= 'occupied_thresh' must be numbers in [0, 1]"},
         MapCase{"image_not_found", kYaml, "<none>", "map image not found (named by 'image' in"},
         MapCase{"image_is_a_directory", replace_all(kYaml, "map.pgm", "."), kPgm,
-                "map image not found"},
+                "is a directory, expected the map image named by 'image' in"},
         MapCase{"image_not_pgm_or_png", kYaml, "GIF89a....",
                 "map image is neither PGM (P5/P2) nor PNG"},
         MapCase{"pgm_header_malformed", kYaml, "P5\n2 x\n255\n", "malformed PGM header"},

@@ -96,6 +96,9 @@ PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_
   run.load_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   run.inputs = loaded.inputs;
+  std::vector<std::string> input_warnings;
+  for (const auto& in : loaded.inputs)
+    input_warnings.insert(input_warnings.end(), in.warnings.begin(), in.warnings.end());
   if (!cfg.scanners.empty()) loaded.cloud.scanners = cfg.scanners;
   run.scanner_source = loaded.cloud.scanners.empty() ? "estimated"
                        : cfg.scanners.empty()        ? "file"
@@ -110,6 +113,7 @@ PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_
     for (const auto& in : cli.inputs) names += (names.empty() ? "" : ", ") + in;
     throw InputError(names, e.problem(), e.line());
   }
+  run.map.warnings.insert(run.map.warnings.begin(), input_warnings.begin(), input_warnings.end());
   return run;
 }
 

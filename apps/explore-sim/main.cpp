@@ -20,6 +20,7 @@
 #include "indoormap/formats/json.hpp"
 #include "indoormap/version.hpp"
 #include "map_yaml.hpp"
+#include "output_set.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
@@ -176,7 +177,7 @@ int run(int argc, char** argv) {
   info.path_sample_every = cfg.explore.path_sample_every;
   info.strip_panels = cfg.strip_panels;
   t0 = std::chrono::steady_clock::now();
-  app::StagedOutputs staged(out);
+  app::OutputSet staged(out, "explore-sim");  // all or nothing: docs/explore-sim.md
   auto files = app::write_explore_files(staged.dir(), r, info);
   const double write_ms = ms_since(t0);
   const json summary = {
@@ -209,7 +210,7 @@ int run(int argc, char** argv) {
   };
   formats::write_json(staged.dir() / "summary.json", summary);
   files.push_back("summary.json");
-  staged.commit(files);
+  staged.commit();
   if (!a.quiet) {
     const auto d95 = r.distance_to_share(0.95);
     std::fprintf(stderr,

@@ -11,6 +11,7 @@
 #include "indoormap/formats/json.hpp"
 #include "indoormap/version.hpp"
 #include "map_yaml.hpp"
+#include "output_set.hpp"
 #include "plan_config.hpp"
 #include "route_files.hpp"
 
@@ -112,7 +113,8 @@ int run(int argc, char** argv) {
 
   t0 = std::chrono::steady_clock::now();
   formats::RouteReport rep{&safe, map.geometry, start, goal, cfg.robot, cfg.planner, &result};
-  auto files = app::write_route_files(out, rep);
+  app::OutputSet set(out, "plan-route");  // all or nothing: docs/plan-route.md, "Outputs"
+  auto files = app::write_route_files(set.dir(), rep);
   const double write_ms = ms_since(t0);
   files.push_back("summary.json");
   json summary = {
@@ -142,7 +144,8 @@ int run(int argc, char** argv) {
         {"total", ms_since(t_start)}}},
       {"outputs", files},
   };
-  formats::write_json(out / "summary.json", summary);
+  formats::write_json(set.dir() / "summary.json", summary);
+  set.commit();
   if (result.routes.empty()) {
     std::cerr << "plan-route: " << result.message << "\n";
     return static_cast<int>(ExitCode::kNoResult);

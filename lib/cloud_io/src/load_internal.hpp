@@ -31,6 +31,7 @@ struct ReadInfo {
   std::vector<Eigen::Vector3d> scanners;
   int scans = 0;              ///< 3DTK: scan files read
   bool output_frame = false;  ///< true: points and scanners are already metres, z up
+  std::vector<std::string> warnings;  ///< InputReport::warnings
 };
 
 /// Makes room for `n` more points, growing geometrically so that merging many files stays

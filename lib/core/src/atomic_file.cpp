@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <system_error>
@@ -33,6 +34,11 @@ void write_stream_atomic(const fs::path& path, const std::function<void(std::ost
       write(out);
       out.flush();
       if (!out) throw OutputError(path.string(), "write failed (disk full?)");
+      // Test hook (documented in atomic_file.hpp): a full disk on the named file.
+      if (const char* fail = std::getenv("INDOORMAP_TEST_FAIL_WRITE");
+          fail && *fail && path.filename() == fail)
+        throw OutputError(path.string(),
+                          "write failed: No space left on device (INDOORMAP_TEST_FAIL_WRITE)");
     }
     std::error_code ec;
     fs::rename(tmp, path, ec);
