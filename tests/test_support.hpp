@@ -71,14 +71,19 @@ struct RunResult {
   std::string out;  ///< stdout
 };
 
-/// Runs an app from the build's bin directory with a shell-quoted argument string.
-inline RunResult run_app(const std::string& app, const std::string& args) {
+/// Runs an app from the build's bin directory with a shell-quoted argument string. env: shell
+/// variable assignments put before the command ("A=1 B=2"); timeout_s > 0: the app is killed
+/// after that many seconds (coreutils timeout; exit code 124), so a hang fails the test.
+inline RunResult run_app(const std::string& app, const std::string& args,
+                         const std::string& env = "", int timeout_s = 0) {
   static int counter = 0;
   auto dir = std::filesystem::temp_directory_path() / "indoormap-tests" / "runs";
   std::filesystem::create_directories(dir);
   auto tag = std::to_string(::getpid()) + "_" + std::to_string(counter++);
   auto out = dir / ("out_" + tag), err = dir / ("err_" + tag);
-  std::string cmd = std::string(INDOORMAP_BIN_DIR) + "/" + app + " " + args + " >" + out.string() +
+  std::string cmd = env + (env.empty() ? "" : " ") +
+                    (timeout_s > 0 ? "timeout -k 5 " + std::to_string(timeout_s) + " " : "") +
+                    std::string(INDOORMAP_BIN_DIR) + "/" + app + " " + args + " >" + out.string() +
                     " 2>" + err.string() + " </dev/null";
   int status = std::system(cmd.c_str());
   RunResult r;

@@ -73,7 +73,8 @@ Args parse_args(int argc, char** argv) {
                   "Plain maps: grey levels >= this are free (default 250)")
       ->check(CLI::Range(0, 255));
   cli_app.add_option("--start", a.start_s, "Start X,Y[,DEG] in map metres (default: see below)");
-  cli_app.add_option("--seed", a.seed, "Seed of the laser noise (overrides run.seed)");
+  cli_app.add_option("--seed", a.seed, "Seed of the laser noise (overrides run.seed)")
+      ->check(CLI::NonNegativeNumber);  // "-1" would wrap to 2^32-1
   cli_app.add_option("-o,--out", a.out_dir, "Output directory (created if missing)");
   cli_app.add_option("-c,--config", a.config_file,
                      "YAML robot, laser and exploration parameters (config/explore-sim.yaml)");
