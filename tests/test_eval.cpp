@@ -2,9 +2,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <nlohmann/json.hpp>
 
 #include "indoormap/core/errors.hpp"
+#include "indoormap/core/polygon.hpp"
 #include "indoormap/formats/ground_truth_json.hpp"
 #include "indoormap/formats/json.hpp"
 #include "indoormap/formats/pgm.hpp"
@@ -294,4 +296,51 @@ TEST(MapEval, BadInputsExitWith2AndNameTheFile) {
   EXPECT_EQ(r.exit_code, 2);
   r = test::run_app("map-eval", "--result " + res.string());
   EXPECT_EQ(r.exit_code, 2);
+}
+
+namespace {
+
+// The cell-by-cell raster IoU polygon_iou used before its row scan (the reference).
+double iou_cell_by_cell(const Polygon& a, const Polygon& b, double cell_m) {
+  const auto [alo, ahi] = bounds(a);
+  const auto [blo, bhi] = bounds(b);
+  const Eigen::Vector2d lo = alo.cwiseMin(blo), hi = ahi.cwiseMax(bhi);
+  if (alo.x() > bhi.x() || blo.x() > ahi.x() || alo.y() > bhi.y() || blo.y() > ahi.y()) return 0.0;
+  const double cell = std::max(cell_m, std::sqrt((hi - lo).prod() / 4e6));
+  const int w = static_cast<int>(std::ceil((hi.x() - lo.x()) / cell));
+  const int h = static_cast<int>(std::ceil((hi.y() - lo.y()) / cell));
+  std::int64_t inter = 0, uni = 0;
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) {
+      const Eigen::Vector2d p(lo.x() + (c + 0.5) * cell, lo.y() + (r + 0.5) * cell);
+      const bool ia = contains(a, p), ib = contains(b, p);
+      inter += ia && ib;
+      uni += ia || ib;
+    }
+  return uni > 0 ? static_cast<double>(inter) / static_cast<double>(uni) : 0.0;
+}
+
+}  // namespace
+
+TEST(PolygonIou, RowScanEqualsTheCellByCellReferenceExactly) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), s(0.05, 1.5);
+  int overlapping = 0;
+  for (int k = 0; k < 300; ++k) {
+    Polygon a = rectangle({u(rng), u(rng)}, {s(rng), s(rng)}, 3 * u(rng));
+    Polygon b;
+    if (k % 3 == 0) {  // a non-convex star, vertices on grid-aligned values too
+      for (int i = 0; i < 10; ++i) {
+        const double r = i % 2 ? 0.3 : 0.8, t = i * 0.6283185307179586;
+        b.push_back({0.5 * std::round(u(rng)) + r * std::cos(t), r * std::sin(t)});
+      }
+    } else {
+      b = rectangle({u(rng), u(rng)}, {s(rng), s(rng)}, 3 * u(rng));
+    }
+    const double cell = k % 2 ? 0.01 : 0.05;
+    const double ref = iou_cell_by_cell(a, b, cell);
+    EXPECT_EQ(polygon_iou(a, b, cell), ref) << k;  // the same cell counts: bit-identical
+    overlapping += ref > 0;
+  }
+  EXPECT_GT(overlapping, 50);
 }

@@ -307,6 +307,7 @@ PlanResult plan_routes(const Grid<SafeCell>& safe, const GridGeometry& geometry,
   PlanResult res;
   res.start_cell = checked_cell(safe, geometry, start, "start");
   res.goal_cell = checked_cell(safe, geometry, goal, "goal");
+  detail::SearchBudget budget(params);  // max_seconds counts from here: wave, region, searches
   res.wave = lee_wave(safe, res.start_cell, res.goal_cell);
   if (res.wave.at(res.goal_cell) < 0) {
     res.region = Grid<std::uint8_t>(safe.width, safe.height, 0);
@@ -314,7 +315,6 @@ PlanResult plan_routes(const Grid<SafeCell>& safe, const GridGeometry& geometry,
     return res;
   }
   res.region = trajectory_region(res.wave, res.start_cell, res.goal_cell);
-  detail::SearchBudget budget(params);
 
   std::vector<std::pair<std::vector<CellIndex>, std::string>> found;
   if (params.paper_rules) {

@@ -33,7 +33,8 @@ struct PlannerParams {
   /// moves more than the best route are still explored (alternatives).
   int extra_moves = 1;
   std::int64_t max_nodes = 200000;  ///< budget of expanded nodes for each search (bounds time)
-  /// Budget of wall-clock seconds for both searches together (a 6000 x 6000 map with a far goal
+  /// Budget of wall-clock seconds of plan_routes (Lee wave, region and both searches; checked
+  /// in the searches) (a 6000 x 6000 map with a far goal
   /// can otherwise run for minutes). Reaching it is a result: no route, budget_reached set.
   double max_seconds = 30.0;
   /// Called about once a second during the searches (not part of the config): the search
