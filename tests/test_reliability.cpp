@@ -186,3 +186,94 @@ TEST(OutputSet, FilesOfTheAppsEarlierRunAreRemovedOthersKept) {
 }
 
 }  // namespace
+
+namespace {
+
+// ------------------------------------------------------------------ silent acceptances
+
+struct RefusedCase {
+  std::string name;
+  std::string app;
+  std::vector<std::pair<std::string, std::string>> files;  ///< written into {d}
+  std::string args;    ///< {d}: the scratch dir; outputs to {d}/out
+  int exit_code;       ///< 2 for the errors; 0 for a warning
+  std::string expect;  ///< substring of stderr ({d} replaced)
+};
+
+void PrintTo(const RefusedCase& c, std::ostream* os) { *os << c.name; }
+
+class NoLongerSilent : public ::testing::TestWithParam<RefusedCase> {};
+
+TEST_P(NoLongerSilent, ErrorOrWarningWithTheDocumentedExitCode) {
+  const auto& c = GetParam();
+  const auto dir = test::scratch_dir();
+  for (const auto& [name, content] : c.files) test::write_text(dir / name, content);
+  const auto r = run_limited(c.app, replace_all(c.args, "{d}", dir.string()));
+  EXPECT_EQ(r.exit_code, c.exit_code) << r.err;
+  EXPECT_NE(r.err.find(replace_all(c.expect, "{d}", dir.string())), std::string::npos) << r.err;
+  if (c.exit_code != 0) {
+    EXPECT_TRUE(!fs::exists(dir / "out") || fs::is_empty(dir / "out")) << "partial output";
+  }
+}
+
+const std::string kPly = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                         "property float y\nproperty float z\nend_header\n";
+const std::string kMapYaml = "image: m.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n";
+
+// A 3DTK scan (cm, left-handed, y up) of a 4 x 3 m room, 2.5 m high: floor, ceiling, walls.
+std::string tdtk_room() {
+  std::string s;
+  auto put = [&](double x, double y, double z) {  // output frame (m, z up) -> 3DTK
+    s += std::to_string(-y * 100) + " " + std::to_string(z * 100) + " " +
+         std::to_string(x * 100) + "\n";
+  };
+  for (double x = 0; x <= 4; x += 0.05)
+    for (double y = 0; y <= 3; y += 0.05) {
+      put(x, y, 0);
+      put(x, y, 2.5);
+    }
+  for (double z = 0; z <= 2.5; z += 0.05) {
+    for (double x = 0; x <= 4; x += 0.05) put(x, 0, z), put(x, 3, z);
+    for (double y = 0; y <= 3; y += 0.05) put(0, y, z), put(4, y, z);
+  }
+  return s;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, NoLongerSilent,
+    ::testing::Values(
+        RefusedCase{"cloud_points_1e308", "pcd-to-map", {{"c.xyz", "0 0 0\n1e308 0 0\n0 1 1\n"}},
+                    "{d}/c.xyz -o {d}/out", 2,
+                    "{d}/c.xyz: no map: the layout has no wall, furniture or free cell"},
+        RefusedCase{"ply_ascii_extra_value", "pcd-to-map",
+                    {{"c.ply", kPly + "0 0 0 7\n1 0 0\n0 1 1\n"}}, "{d}/c.ply -o {d}/out", 2,
+                    "{d}/c.ply:8: PLY data line has more values than the 3 properties of "
+                    "'vertex'"},
+        RefusedCase{"ply_ascii_short_line", "pcd-to-map",
+                    {{"c.ply", kPly + "0 0 0\n1 0\n0 1 1\n0 0 0\n"}}, "{d}/c.ply -o {d}/out", 2,
+                    "{d}/c.ply:9: PLY data line has fewer values than the 3 properties"},
+        RefusedCase{"yaml_key_given_twice", "pcd-to-map",
+                    {{"c.yaml", "voxel:\n  cell_m: 0.05\nvoxel:\n  cell_m: 0.1\n"},
+                     {"c.xyz", "0 0 0\n"}},
+                    "-c {d}/c.yaml {d}/c.xyz -o {d}/out", 2,
+                    "{d}/c.yaml:3: key 'voxel' is given twice"},
+        RefusedCase{"yaml_nested_key_given_twice", "plan-route",
+                    {{"c.yaml", "robot:\n  width_m: 0.5\n  width_m: 0.6\n"}},
+                    "-c {d}/c.yaml --map {d}/m.pgm --resolution 0.05 --start 0,0 --goal 1,1 -o "
+                    "{d}/out",
+                    2, "{d}/c.yaml:3: key 'robot.width_m' is given twice"},
+        RefusedCase{"map_yaml_mode_banana", "plan-route",
+                    {{"m.yaml", kMapYaml + "mode: banana\n"}, {"m.pgm", map_fixtures::kPgm}},
+                    "--map {d}/m.yaml --start 0,0 --goal 0.05,0 -o {d}/out", 2,
+                    "{d}/m.yaml:4: key 'mode': 'banana' is not supported (only 'trinary'"},
+        RefusedCase{"scene_sim_seed_negative", "scene-sim", {}, "--random --seed -1 -o {d}/out",
+                    2, "--seed"},
+        RefusedCase{"explore_sim_seed_negative", "explore-sim", {{"m.pgm", map_fixtures::kPgm}},
+                    "{d}/m.pgm --resolution 0.05 --seed -1 -o {d}/out", 2, "--seed"},
+        RefusedCase{"tdtk_scan_without_pose", "pcd-to-map", {{"scan000.3d", tdtk_room()}},
+                    "{d} -q -o {d}/out", 0,
+                    "pcd-to-map: warning: {d}/scan000.3d: no scan000.pose or scan000.frames "
+                    "beside it: read with the identity pose"}),
+    [](const auto& info) { return info.param.name; });
+
+}  // namespace

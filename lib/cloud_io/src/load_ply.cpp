@@ -273,6 +273,21 @@ class TokenReader {
     return v;
   }
   std::size_t line() const { return line_; }
+  /// True when only spaces, tabs or a CR are left on the current line (or the file ends).
+  bool at_end_of_line() {
+    for (;;) {
+      while (pos_ < buf_.size() && (buf_[pos_] == ' ' || buf_[pos_] == '\t' || buf_[pos_] == '\r'))
+        ++pos_;
+      if (pos_ < buf_.size()) return buf_[pos_] == '\n';
+      if (eof_) return true;
+      buf_.clear();
+      pos_ = 0;
+      buf_.resize(chunk_);
+      const std::size_t got = std::fread(buf_.data(), 1, chunk_, f_);
+      buf_.resize(got);
+      eof_ = got < chunk_;
+    }
+  }
 
  private:
   std::FILE* f_;
@@ -346,22 +361,45 @@ ReadInfo read_ply(const std::string& file, const Budget& budget,
       if (it->props.empty()) continue;  // nothing to read, whatever its count (up to 2^64 - 1)
       const bool is_vertex = it == vit;
       for (std::uint64_t k = 0; k < it->count; ++k) {
+        // One element per line: a short or long line would shift every later value silently.
+        std::size_t line = 0;
+        auto same_line = [&] {
+          if (line == 0) line = tr.line();
+          if (tr.line() != line)
+            throw InputError(file,
+                             "PLY data line has fewer values than the " +
+                                 std::to_string(it->props.size()) + " properties of '" + it->name +
+                                 "' (short line)",
+                             line);
+        };
         for (std::size_t pi = 0; pi < it->props.size(); ++pi) {
           const Property& p = it->props[pi];
           if (p.is_list) {
             const double c = tr.number();
+            same_line();
             if (!(c >= 0) || c > 1e6 || c != std::floor(c))
               throw InputError(file, "PLY list count is not a small non-negative integer",
                                tr.line());
-            for (auto j = static_cast<std::uint64_t>(c); j > 0; --j) tr.next();
+            for (auto j = static_cast<std::uint64_t>(c); j > 0; --j) {
+              tr.next();
+              same_line();
+            }
           } else if (is_vertex) {
             const double x = tr.number();
+            same_line();
             for (int a = 0; a < 3; ++a)
               if (xyz_index[a] == static_cast<int>(pi)) v[a] = x;
           } else {
             tr.next();
+            same_line();
           }
         }
+        if (!tr.at_end_of_line())
+          throw InputError(file,
+                           "PLY data line has more values than the " +
+                               std::to_string(it->props.size()) + " properties of '" + it->name +
+                               "'",
+                           tr.line());
         if (is_vertex)
           out.emplace_back(static_cast<float>(v[0]), static_cast<float>(v[1]),
                            static_cast<float>(v[2]));
