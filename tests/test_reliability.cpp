@@ -277,3 +277,67 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& info) { return info.param.name; });
 
 }  // namespace
+
+namespace {
+
+// A 4 x 3 x 2.5 m room of points 5 cm apart (floor, ceiling, four walls), with a 0.8 x 0.6 m desk
+// 0.75 m high in the middle when `desk`.
+std::string room_xyz(bool desk) {
+  std::string s;
+  auto put = [&](double x, double y, double z) {
+    char line[64];
+    std::snprintf(line, sizeof line, "%.3f %.3f %.3f\n", x, y, z);
+    s += line;
+  };
+  auto steps = [](double a, double b) { return static_cast<int>(std::lround((b - a) / 0.05)); };
+  auto at = [](double a, int i) { return a + 0.05 * i; };
+  for (int i = 0; i <= steps(0, 4); ++i)
+    for (int j = 0; j <= steps(0, 3); ++j) put(at(0, i), at(0, j), 0), put(at(0, i), at(0, j), 2.5);
+  for (int k = 0; k <= steps(0, 2.5); ++k) {
+    for (int i = 0; i <= steps(0, 4); ++i) put(at(0, i), 0, at(0, k)), put(at(0, i), 3, at(0, k));
+    for (int j = 0; j <= steps(0, 3); ++j) put(0, at(0, j), at(0, k)), put(4, at(0, j), at(0, k));
+  }
+  if (!desk) return s;
+  for (int i = 0; i <= steps(1.5, 2.3); ++i)
+    for (int j = 0; j <= steps(1.2, 1.8); ++j) put(at(1.5, i), at(1.2, j), 0.75);
+  for (int k = 0; k <= steps(0, 0.75); ++k) {
+    for (int i = 0; i <= steps(1.5, 2.3); ++i)
+      put(at(1.5, i), 1.2, at(0, k)), put(at(1.5, i), 1.8, at(0, k));
+    for (int j = 0; j <= steps(1.2, 1.8); ++j)
+      put(1.5, at(1.2, j), at(0, k)), put(2.3, at(1.2, j), at(0, k));
+  }
+  return s;
+}
+
+TEST(OutputSet, FurnitureExtractRunWithoutObjectsRemovesTheEarlierObjectFiles) {
+  const auto dir = test::scratch_dir();
+  test::write_text(dir / "desk.xyz", room_xyz(true));
+  test::write_text(dir / "empty.xyz", room_xyz(false));
+  const fs::path out = dir / "out";
+  const std::string opts = " --scanner 1,1,1.2 -q -o ";
+  auto r = run_limited("furniture-extract", (dir / "desk.xyz").string() + opts + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_TRUE(fs::exists(out / "objects")) << "the desk room should give object point files";
+  ASSERT_FALSE(fs::is_empty(out / "objects"));
+
+  // `objects` a plain file where the folder goes: exit 1, the directory byte for byte as before.
+  const fs::path out2 = dir / "out2";
+  fs::copy(out, out2, fs::copy_options::recursive);
+  fs::remove_all(out2 / "objects");
+  test::write_text(out2 / "objects", "a file in the way");
+  const auto before = snapshot(out2);
+  r = run_limited("furniture-extract", (dir / "desk.xyz").string() + opts + out2.string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("objects': exists and is not a directory"), std::string::npos) << r.err;
+  EXPECT_EQ(snapshot(out2), before);
+
+  // A run that finds no object: the earlier run's objects/object_*.pcd go, the user's file stays.
+  test::write_text(out / "notes.txt", "mine");
+  r = run_limited("furniture-extract", (dir / "empty.xyz").string() + opts + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(out / "objects")) << "stale object files left behind";
+  EXPECT_EQ(test::read_text(out / "notes.txt"), "mine");
+  EXPECT_TRUE(fs::exists(out / "objects.json"));
+}
+
+}  // namespace
