@@ -64,8 +64,9 @@ TEST(ExploreSim, SingleRoomOutputsAndDeterminism) {
   EXPECT_NE(test::read_text(dir / "a" / "map.yaml").find("image: map.pgm"), std::string::npos);
   // No staging directory left behind (beside or inside); the one hidden file is the manifest.
   for (const auto& e : fs::directory_iterator(dir / "a"))
-    if (e.path().filename() != ".indoormap-outputs")
+    if (e.path().filename() != ".indoormap-outputs") {
       EXPECT_NE(e.path().filename().string().front(), '.') << e.path();
+    }
   for (const auto& e : fs::directory_iterator(dir))
     EXPECT_EQ(e.path().filename().string().find("indoormap-staging"), std::string::npos);
 

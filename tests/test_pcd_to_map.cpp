@@ -86,8 +86,9 @@ TEST(PcdToMap, WritesEveryOutputInItsFormat) {
     EXPECT_TRUE(fs::exists(out / f)) << f;
   // No temporary files are left behind; the one hidden file is the output-set manifest.
   for (const auto& e : fs::directory_iterator(out))
-    if (e.path().filename() != ".indoormap-outputs")
+    if (e.path().filename() != ".indoormap-outputs") {
       EXPECT_NE(e.path().filename().string()[0], '.') << e.path();
+    }
 
   // The ROS map loads the way map_server reads it, and agrees with the layout classes.
   formats::RosMap ros = app::read_ros_map(out / "map.yaml");

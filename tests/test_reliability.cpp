@@ -1,61 +1,24 @@
 // Reliability round 2, through the apps: every file an app reads is checked by one function
-// (indoormap::check_input_file: a FIFO or a directory is exit 2 naming the file, never a hang),
-// and every app writes its outputs as one set (app::OutputSet): a failure part-way leaves the
-// output directory byte for byte as it was, and files of an earlier run that this run does not
-// write are removed. Rows of docs/robustness.md ("Reliability, round 2").
+// (indoormap::check_input_file: a FIFO or a directory is exit 2 naming the file, never a hang);
+// the silent acceptances of round 1 are errors or warnings; plan-route's work budget is a result
+// (exit 3). Output sets: test_output_set.cpp. Rows of docs/robustness.md ("Reliability, round 2").
 #include <gtest/gtest.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
-#include "indoormap/core/grid.hpp"
-#include "indoormap/formats/ros_map.hpp"
 #include "map_fixtures.hpp"
-#include "test_support.hpp"
+#include "reliability_fixtures.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
+using namespace indoormap::reliability;
 using test::replace_all;
 
 namespace {
-
-/// run_app with a time limit (a hang is a failure, not a stuck suite) and an environment prefix.
-test::RunResult run_limited(const std::string& app, const std::string& args,
-                            const std::string& env = "") {
-  return test::run_app(app, args, env, 30);
-}
-
-/// Every file below dir (relative path -> bytes); directories as "<rel>/" -> "".
-std::map<std::string, std::string> snapshot(const fs::path& dir) {
-  std::map<std::string, std::string> s;
-  if (!fs::exists(dir)) return s;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    const std::string rel = fs::relative(e.path(), dir).generic_string();
-    if (e.is_directory())
-      s[rel + "/"] = "";
-    else
-      s[rel] = test::read_text(e.path());
-  }
-  return s;
-}
-
-/// A 3 x 2 m room of 0.05 m cells with walls around it (plan-route's and explore-sim's input).
-fs::path small_map(const fs::path& dir) {
-  Grid<Cell> room(60, 40, Cell::kFree);
-  for (int c = 0; c < 60; ++c) room.at(c, 0) = room.at(c, 39) = Cell::kWall;
-  for (int r = 0; r < 40; ++r) room.at(0, r) = room.at(59, r) = Cell::kWall;
-  formats::write_ros_map(dir, "map", room, GridGeometry({0, 0}, 0.05, 60, 40));
-  return dir / "map.yaml";
-}
-
-const std::string kTruth =
-    R"({"format": "indoormap-ground-truth", "rooms": [], "furniture": [], "layout": )"
-    R"({"image": "truth.pgm", "resolution": 0.05, "origin": [0, 0], "width": 2, "height": 2}})";
 
 // ------------------------------------------------------------------ FIFOs and directories
 
@@ -125,70 +88,6 @@ INSTANTIATE_TEST_SUITE_P(
              (std::get<1>(info.param) == Kind::kFifo ? "_fifo" : "_directory");
     });
 
-// ------------------------------------------------------------------ output sets
-
-const std::string kPlanArgs = " --start 0.5,0.5 --goal 2.5,1.5 -q -o ";
-
-TEST(OutputSet, AFailurePartWayLeavesTheOutputDirectoryAsItWas) {
-  const auto dir = test::scratch_dir();
-  const std::string map = "--map " + small_map(dir).string();
-  const fs::path out = dir / "out";
-  ASSERT_EQ(run_limited("plan-route", map + kPlanArgs + out.string()).exit_code, 0);
-  test::write_text(out / "notes.txt", "the user's own file\n");
-  const auto before = snapshot(out);
-  ASSERT_TRUE(before.count("route.png") && before.count(".indoormap-outputs"));
-
-  // A full disk while route.png is written (injected: the test hook of write_stream_atomic).
-  auto r = run_limited("plan-route", map + " --goal 2,1 --start 0.5,0.5 -q -o " + out.string(),
-                       "INDOORMAP_TEST_FAIL_WRITE=route.png");
-  EXPECT_EQ(r.exit_code, 1) << r.err;
-  EXPECT_NE(r.err.find("route.png': write failed: No space left on device"), std::string::npos)
-      << r.err;
-  EXPECT_EQ(snapshot(out), before);
-
-  // A directory where summary.json goes: refused before anything is moved.
-  fs::remove(out / "summary.json");
-  fs::create_directories(out / "summary.json");
-  const auto with_dir = snapshot(out);
-  r = run_limited("plan-route", map + " --goal 2,1 --start 0.5,0.5 -q -o " + out.string());
-  EXPECT_EQ(r.exit_code, 1) << r.err;
-  EXPECT_NE(r.err.find("summary.json': is a directory; nothing was written"), std::string::npos)
-      << r.err;
-  EXPECT_EQ(snapshot(out), with_dir);
-  // No staging directory is left beside the output directory.
-  for (const auto& e : fs::directory_iterator(dir))
-    EXPECT_EQ(e.path().filename().string().find("indoormap-staging"), std::string::npos)
-        << e.path();
-}
-
-TEST(OutputSet, FilesOfTheAppsEarlierRunAreRemovedOthersKept) {
-  const auto dir = test::scratch_dir();
-  const std::string map = "--map " + small_map(dir).string();
-  const fs::path out = dir / "out";
-  ASSERT_EQ(run_limited("plan-route", map + kPlanArgs + out.string()).exit_code, 0);
-  // An earlier plan-route run that wrote one more file (old/extra.png), and the user's file.
-  fs::create_directories(out / "old");
-  test::write_text(out / "old" / "extra.png", "stale");
-  test::write_text(out / "notes.txt", "mine");
-  test::write_text(out / ".indoormap-outputs",
-                   test::read_text(out / ".indoormap-outputs") +
-                       "plan-route old/extra.png\nmap-eval eval.json\n");
-  test::write_text(out / "eval.json", "{}");
-  const auto r = run_limited("plan-route", map + kPlanArgs + out.string());
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_FALSE(fs::exists(out / "old")) << "stale file (and its emptied folder) left behind";
-  EXPECT_EQ(test::read_text(out / "notes.txt"), "mine");
-  EXPECT_EQ(test::read_text(out / "eval.json"), "{}");  // another app's file
-  const std::string manifest = test::read_text(out / ".indoormap-outputs");
-  EXPECT_NE(manifest.find("map-eval eval.json\n"), std::string::npos) << manifest;
-  EXPECT_NE(manifest.find("plan-route summary.json\n"), std::string::npos) << manifest;
-  EXPECT_EQ(manifest.find("extra.png"), std::string::npos) << manifest;
-}
-
-}  // namespace
-
-namespace {
-
 // ------------------------------------------------------------------ silent acceptances
 
 struct RefusedCase {
@@ -219,25 +118,6 @@ TEST_P(NoLongerSilent, ErrorOrWarningWithTheDocumentedExitCode) {
 const std::string kPly = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
                          "property float y\nproperty float z\nend_header\n";
 const std::string kMapYaml = "image: m.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n";
-
-// A 3DTK scan (cm, left-handed, y up) of a 4 x 3 m room, 2.5 m high: floor, ceiling, walls.
-std::string tdtk_room() {
-  std::string s;
-  auto put = [&](double x, double y, double z) {  // output frame (m, z up) -> 3DTK
-    s += std::to_string(-y * 100) + " " + std::to_string(z * 100) + " " +
-         std::to_string(x * 100) + "\n";
-  };
-  for (double x = 0; x <= 4; x += 0.05)
-    for (double y = 0; y <= 3; y += 0.05) {
-      put(x, y, 0);
-      put(x, y, 2.5);
-    }
-  for (double z = 0; z <= 2.5; z += 0.05) {
-    for (double x = 0; x <= 4; x += 0.05) put(x, 0, z), put(x, 3, z);
-    for (double y = 0; y <= 3; y += 0.05) put(0, y, z), put(4, y, z);
-  }
-  return s;
-}
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, NoLongerSilent,
@@ -280,64 +160,27 @@ INSTANTIATE_TEST_SUITE_P(
 
 namespace {
 
-// A 4 x 3 x 2.5 m room of points 5 cm apart (floor, ceiling, four walls), with a 0.8 x 0.6 m desk
-// 0.75 m high in the middle when `desk`.
-std::string room_xyz(bool desk) {
-  std::string s;
-  auto put = [&](double x, double y, double z) {
-    char line[64];
-    std::snprintf(line, sizeof line, "%.3f %.3f %.3f\n", x, y, z);
-    s += line;
-  };
-  auto steps = [](double a, double b) { return static_cast<int>(std::lround((b - a) / 0.05)); };
-  auto at = [](double a, int i) { return a + 0.05 * i; };
-  for (int i = 0; i <= steps(0, 4); ++i)
-    for (int j = 0; j <= steps(0, 3); ++j) put(at(0, i), at(0, j), 0), put(at(0, i), at(0, j), 2.5);
-  for (int k = 0; k <= steps(0, 2.5); ++k) {
-    for (int i = 0; i <= steps(0, 4); ++i) put(at(0, i), 0, at(0, k)), put(at(0, i), 3, at(0, k));
-    for (int j = 0; j <= steps(0, 3); ++j) put(0, at(0, j), at(0, k)), put(4, at(0, j), at(0, k));
-  }
-  if (!desk) return s;
-  for (int i = 0; i <= steps(1.5, 2.3); ++i)
-    for (int j = 0; j <= steps(1.2, 1.8); ++j) put(at(1.5, i), at(1.2, j), 0.75);
-  for (int k = 0; k <= steps(0, 0.75); ++k) {
-    for (int i = 0; i <= steps(1.5, 2.3); ++i)
-      put(at(1.5, i), 1.2, at(0, k)), put(at(1.5, i), 1.8, at(0, k));
-    for (int j = 0; j <= steps(1.2, 1.8); ++j)
-      put(1.5, at(1.2, j), at(0, k)), put(2.3, at(1.2, j), at(0, k));
-  }
-  return s;
-}
-
-TEST(OutputSet, FurnitureExtractRunWithoutObjectsRemovesTheEarlierObjectFiles) {
+TEST(PlanRouteBudget, ReachingItIsExitThreeWithTheBudgetNamed) {
   const auto dir = test::scratch_dir();
-  test::write_text(dir / "desk.xyz", room_xyz(true));
-  test::write_text(dir / "empty.xyz", room_xyz(false));
-  const fs::path out = dir / "out";
-  const std::string opts = " --scanner 1,1,1.2 -q -o ";
-  auto r = run_limited("furniture-extract", (dir / "desk.xyz").string() + opts + out.string());
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  ASSERT_TRUE(fs::exists(out / "objects")) << "the desk room should give object point files";
-  ASSERT_FALSE(fs::is_empty(out / "objects"));
-
-  // `objects` a plain file where the folder goes: exit 1, the directory byte for byte as before.
-  const fs::path out2 = dir / "out2";
-  fs::copy(out, out2, fs::copy_options::recursive);
-  fs::remove_all(out2 / "objects");
-  test::write_text(out2 / "objects", "a file in the way");
-  const auto before = snapshot(out2);
-  r = run_limited("furniture-extract", (dir / "desk.xyz").string() + opts + out2.string());
-  EXPECT_EQ(r.exit_code, 1) << r.err;
-  EXPECT_NE(r.err.find("objects': exists and is not a directory"), std::string::npos) << r.err;
-  EXPECT_EQ(snapshot(out2), before);
-
-  // A run that finds no object: the earlier run's objects/object_*.pcd go, the user's file stays.
-  test::write_text(out / "notes.txt", "mine");
-  r = run_limited("furniture-extract", (dir / "empty.xyz").string() + opts + out.string());
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_FALSE(fs::exists(out / "objects")) << "stale object files left behind";
-  EXPECT_EQ(test::read_text(out / "notes.txt"), "mine");
-  EXPECT_TRUE(fs::exists(out / "objects.json"));
+  const std::string map = "--map " + small_map(dir).string();
+  // Moves of at most 0.5 m to a goal 2.2 m away need five moves; two expanded nodes cannot.
+  test::write_text(dir / "c.yaml", "planner:\n  d_max_m: 0.5\n  max_nodes: 2\n");
+  auto r = run_limited("plan-route", map + " -c " + (dir / "c.yaml").string() + kPlanArgs +
+                                         (dir / "out").string());
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("plan-route: no route found within the work budget: planner.max_nodes 2 "
+                       "nodes reached"),
+            std::string::npos)
+      << r.err;
+  const std::string summary = test::read_text(dir / "out" / "summary.json");
+  EXPECT_NE(summary.find("\"budget_reached\": \"planner.max_nodes\""), std::string::npos)
+      << summary;
+  // max_seconds is validated beside its definition.
+  test::write_text(dir / "s.yaml", "planner:\n  max_seconds: 0\n");
+  r = run_limited("plan-route", map + " -c " + (dir / "s.yaml").string() + kPlanArgs +
+                                    (dir / "out2").string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("planner.max_seconds: must be in (0, 86400] s"), std::string::npos) << r.err;
 }
 
 }  // namespace
