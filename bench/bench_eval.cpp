@@ -1,8 +1,9 @@
 // map-eval: sim::evaluate_objects on N truth furniture items spread over a building (a grid of
 // rotated boxes 1.5 m apart), the result the same items shifted by 4 cm with every tenth missing
 // and every twentieth spurious. Side by side in the same run: the all-pairs loop it replaced
-// with the cell-by-cell raster IoU (reference, kept here), which tests every truth item against every result object (quadratic;
-// 30,000 items took over a minute in map-eval). Results: docs/benchmarks.md.
+// with the cell-by-cell raster IoU (reference, kept here), which tests every truth item against
+// every result object (quadratic; 30,000 items took over a minute in map-eval). Results:
+// docs/benchmarks.md.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -43,9 +44,9 @@ const Items& items(int n) {
       s.result.push_back(r);
     }
     if (i % 20 == 0)
-      s.result.push_back({"s" + std::to_string(i), "", rectangle(c + Eigen::Vector2d(0.7, 0.7),
-                                                                 {0.2, 0.2}, 0.0),
-                          0.0, 0.5, true});
+      s.result.push_back({"s" + std::to_string(i), "",
+                          rectangle(c + Eigen::Vector2d(0.7, 0.7), {0.2, 0.2}, 0.0), 0.0, 0.5,
+                          true});
   }
   return cache.emplace(n, std::move(s)).first->second;
 }

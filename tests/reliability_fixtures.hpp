@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 
 /// run_app with a time limit (a hang is a failure, not a stuck suite) and an environment prefix.
 inline test::RunResult run_limited(const std::string& app, const std::string& args,
-                            const std::string& env = "") {
+                                   const std::string& env = "") {
   return test::run_app(app, args, env, 30);
 }
 
@@ -55,8 +55,8 @@ inline const std::string kPlanArgs = " --start 0.5,0.5 --goal 2.5,1.5 -q -o ";
 inline std::string tdtk_room() {
   std::string s;
   auto put = [&](double x, double y, double z) {  // output frame (m, z up) -> 3DTK
-    s += std::to_string(-y * 100) + " " + std::to_string(z * 100) + " " +
-         std::to_string(x * 100) + "\n";
+    s += std::to_string(-y * 100) + " " + std::to_string(z * 100) + " " + std::to_string(x * 100) +
+         "\n";
   };
   for (double x = 0; x <= 4; x += 0.05)
     for (double y = 0; y <= 3; y += 0.05) {

@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 #include <nlohmann/json.hpp>
+#include <random>
 
 #include "indoormap/core/errors.hpp"
 #include "indoormap/core/polygon.hpp"
@@ -62,7 +62,9 @@ fs::path make_truth(const fs::path& dir) {
   return dir / "ground_truth.json";
 }
 
-json read_json(const fs::path& p) { return json::parse(test::read_text(p)); }
+json read_json(const fs::path& p) {
+  return json::parse(test::read_text(p));
+}
 
 }  // namespace
 
@@ -121,7 +123,8 @@ TEST(EvalObjects, MatchingRecallPrecisionAndHeights) {
   EXPECT_EQ(s.missed, std::vector<std::string>{"c"});
   EXPECT_EQ(s.spurious, std::vector<std::string>{"r2"});
   // Half overlap (IoU 1/3) is not a match.
-  const ObjectScores t = evaluate_objects({truth[0]}, {{"h", "", rectangle({0.5, 0}, {1, 1}, 0), {}, {}, true}}, 0.5);
+  const ObjectScores t =
+      evaluate_objects({truth[0]}, {{"h", "", rectangle({0.5, 0}, {1, 1}, 0), {}, {}, true}}, 0.5);
   EXPECT_EQ(t.matched, 0);
 }
 
@@ -162,15 +165,18 @@ TEST(EvalRooms, HausdorffAndAreaError) {
 }
 
 TEST(EvalPolygon, IouOfKnownShapes) {
-  EXPECT_NEAR(polygon_iou(rectangle({0, 0}, {1, 1}, 0), rectangle({0.5, 0}, {1, 1}, 0)), 1.0 / 3.0, 1e-3);
+  EXPECT_NEAR(polygon_iou(rectangle({0, 0}, {1, 1}, 0), rectangle({0.5, 0}, {1, 1}, 0)), 1.0 / 3.0,
+              1e-3);
   // Same square turned by 45 degrees: intersection = the regular octagon of inradius 0.5,
   // area 2 (sqrt 2 - 1) = 0.8284; union = 2 - 0.8284.
   const double oct = 2 * (std::sqrt(2.0) - 1);
-  EXPECT_NEAR(polygon_iou(rectangle({0, 0}, {1, 1}, 0), rectangle({0, 0}, {1, 1}, std::acos(-1.0) / 4)),
-              oct / (2 - oct), 2e-3);
+  EXPECT_NEAR(
+      polygon_iou(rectangle({0, 0}, {1, 1}, 0), rectangle({0, 0}, {1, 1}, std::acos(-1.0) / 4)),
+      oct / (2 - oct), 2e-3);
   EXPECT_EQ(polygon_iou(rectangle({0, 0}, {1, 1}, 0), rectangle({3, 0}, {1, 1}, 0)), 0.0);
   EXPECT_NEAR(std::abs(signed_area(circle_polygon({0, 0}, 1.0))), 3.14159265, 1e-6);
-  EXPECT_NEAR(boundary_hausdorff(rectangle({0, 0}, {2, 2}, 0), rectangle({0, 0}, {2.4, 2}, 0)), 0.2, 1e-9);
+  EXPECT_NEAR(boundary_hausdorff(rectangle({0, 0}, {2, 2}, 0), rectangle({0, 0}, {2.4, 2}, 0)), 0.2,
+              1e-9);
 }
 
 TEST(MapEval, HandMadeResultFilesGiveKnownScores) {
@@ -195,7 +201,7 @@ TEST(MapEval, HandMadeResultFilesGiveKnownScores) {
       }
     }
   }
-  ASSERT_EQ(n_cab, 20 * 8);   // 1.0 x 0.4 m at 5 cm
+  ASSERT_EQ(n_cab, 20 * 8);  // 1.0 x 0.4 m at 5 cm
   ASSERT_EQ(n_desk, 24 * 12);
   formats::write_layout_pgm(res / "layout.pgm", layout);
   formats::write_map_yaml(res / "map.yaml", formats::map_meta("map.pgm", tf.layout_geometry),
@@ -211,14 +217,17 @@ TEST(MapEval, HandMadeResultFilesGiveKnownScores) {
     {"type": "Feature", "properties": {"kind": "room"},
      "geometry": {"type": "Polygon", "coordinates": [[[0.05, 0], [4.05, 0], [4.05, 3], [0.05, 3], [0.05, 0]]]}}]})");
 
-  const auto r = test::run_app("map-eval", "--truth " + truth.string() + " --result " + res.string());
+  const auto r =
+      test::run_app("map-eval", "--truth " + truth.string() + " --result " + res.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json e = read_json(res / "eval.json");
   EXPECT_EQ(e["missing"].size(), 0u);
   const json& cls = e["layout"]["classes"];
   EXPECT_DOUBLE_EQ(cls["wall"]["iou"].get<double>(), 1.0);
-  EXPECT_DOUBLE_EQ(cls["furniture"]["iou"].get<double>(), static_cast<double>(n_desk) / (n_desk + n_cab));
-  EXPECT_DOUBLE_EQ(cls["free"]["iou"].get<double>(), static_cast<double>(n_free) / (n_free + n_cab));
+  EXPECT_DOUBLE_EQ(cls["furniture"]["iou"].get<double>(),
+                   static_cast<double>(n_desk) / (n_desk + n_cab));
+  EXPECT_DOUBLE_EQ(cls["free"]["iou"].get<double>(),
+                   static_cast<double>(n_free) / (n_free + n_cab));
   const json& ob = e["objects"];
   EXPECT_EQ(ob["truth_count"], 2);  // cabinet and desk; the lamp hangs from the ceiling
   EXPECT_EQ(ob["matched"], 1);
@@ -236,8 +245,9 @@ TEST(MapEval, HandMadeResultFilesGiveKnownScores) {
   (void)truth_cells;
 
   // With the lamps, three objects are expected.
-  const auto r2 = test::run_app("map-eval", "--truth " + truth.string() + " --result " + res.string() +
-                                                " --include-hanging -o " + (dir / "e2").string());
+  const auto r2 =
+      test::run_app("map-eval", "--truth " + truth.string() + " --result " + res.string() +
+                                    " --include-hanging -o " + (dir / "e2").string());
   ASSERT_EQ(r2.exit_code, 0) << r2.err;
   EXPECT_EQ(read_json(dir / "e2" / "eval.json")["objects"]["truth_count"], 3);
   EXPECT_EQ(read_json(dir / "e2" / "eval.json")["objects"]["result_count"], 4);
@@ -287,12 +297,15 @@ TEST(MapEval, BadInputsExitWith2AndNameTheFile) {
   test::write_text(res / "objects.json", R"({"objects": [{"id": 1, "z_max_m": 1}]})");
   r = test::run_app("map-eval", "--truth " + truth.string() + " --result " + res.string());
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("objects.json: key 'objects[0]': needs 'footprint' or 'obb'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("objects.json: key 'objects[0]': needs 'footprint' or 'obb'"),
+            std::string::npos)
+      << r.err;
   test::write_text(res / "objects.json", "{not json");
   r = test::run_app("map-eval", "--truth " + truth.string() + " --result " + res.string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("invalid JSON"), std::string::npos) << r.err;
-  r = test::run_app("map-eval", "--truth " + (dir / "nope.json").string() + " --result " + res.string());
+  r = test::run_app("map-eval",
+                    "--truth " + (dir / "nope.json").string() + " --result " + res.string());
   EXPECT_EQ(r.exit_code, 2);
   r = test::run_app("map-eval", "--result " + res.string());
   EXPECT_EQ(r.exit_code, 2);

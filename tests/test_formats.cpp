@@ -12,7 +12,6 @@
 #include "indoormap/formats/pgm.hpp"
 #include "indoormap/formats/room_geojson.hpp"
 #include "indoormap/formats/ros_map.hpp"
-#include "map_yaml.hpp"
 #include "indoormap/formats/route_json.hpp"
 #include "indoormap/objects/objects.hpp"
 #include "indoormap/sim/eval.hpp"
@@ -20,14 +19,15 @@
 #include "indoormap/sim/simulate.hpp"
 #include "indoormap/sim/world.hpp"
 #include "map_fixtures.hpp"
+#include "map_yaml.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
 using map_fixtures::kPgm;
 using map_fixtures::png_header;
-using test::replace_all;
 using nlohmann::json;
+using test::replace_all;
 
 namespace {
 

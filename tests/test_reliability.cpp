@@ -31,7 +31,9 @@ struct InputCase {
   std::string bad;   ///< file name of the bad input in {d}
 };
 
-void PrintTo(const InputCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const InputCase& c, std::ostream* os) {
+  *os << c.name;
+}
 
 class BadInputFile : public ::testing::TestWithParam<std::tuple<InputCase, Kind>> {};
 
@@ -51,8 +53,8 @@ TEST_P(BadInputFile, IsExitTwoNamingTheFileWithoutOutput) {
   const auto r = run_limited(
       c.app, replace_all(replace_all(c.args, "{bad}", bad.string()), "{d}", dir.string()));
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  const std::string problem = kind == Kind::kFifo ? ": is not a regular file (a FIFO"
-                                                  : ": is a directory, expected ";
+  const std::string problem =
+      kind == Kind::kFifo ? ": is not a regular file (a FIFO" : ": is a directory, expected ";
   EXPECT_NE(r.err.find(c.app + ": " + bad.string() + problem), std::string::npos) << r.err;
   EXPECT_TRUE(!fs::exists(dir / "out") || fs::is_empty(dir / "out")) << "partial output";
 }
@@ -99,7 +101,9 @@ struct RefusedCase {
   std::string expect;  ///< substring of stderr ({d} replaced)
 };
 
-void PrintTo(const RefusedCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const RefusedCase& c, std::ostream* os) {
+  *os << c.name;
+}
 
 class NoLongerSilent : public ::testing::TestWithParam<RefusedCase> {};
 
@@ -115,43 +119,70 @@ TEST_P(NoLongerSilent, ErrorOrWarningWithTheDocumentedExitCode) {
   }
 }
 
-const std::string kPly = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
-                         "property float y\nproperty float z\nend_header\n";
+const std::string kPly =
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+    "property float y\nproperty float z\nend_header\n";
 const std::string kMapYaml = "image: m.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n";
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, NoLongerSilent,
     ::testing::Values(
-        RefusedCase{"cloud_points_1e308", "pcd-to-map", {{"c.xyz", "0 0 0\n1e308 0 0\n0 1 1\n"}},
-                    "{d}/c.xyz -o {d}/out", 2,
+        RefusedCase{"cloud_points_1e308",
+                    "pcd-to-map",
+                    {{"c.xyz", "0 0 0\n1e308 0 0\n0 1 1\n"}},
+                    "{d}/c.xyz -o {d}/out",
+                    2,
                     "{d}/c.xyz: no map: the layout has no wall, furniture or free cell"},
-        RefusedCase{"ply_ascii_extra_value", "pcd-to-map",
-                    {{"c.ply", kPly + "0 0 0 7\n1 0 0\n0 1 1\n"}}, "{d}/c.ply -o {d}/out", 2,
+        RefusedCase{"ply_ascii_extra_value",
+                    "pcd-to-map",
+                    {{"c.ply", kPly + "0 0 0 7\n1 0 0\n0 1 1\n"}},
+                    "{d}/c.ply -o {d}/out",
+                    2,
                     "{d}/c.ply:8: PLY data line has more values than the 3 properties of "
                     "'vertex'"},
-        RefusedCase{"ply_ascii_short_line", "pcd-to-map",
-                    {{"c.ply", kPly + "0 0 0\n1 0\n0 1 1\n0 0 0\n"}}, "{d}/c.ply -o {d}/out", 2,
+        RefusedCase{"ply_ascii_short_line",
+                    "pcd-to-map",
+                    {{"c.ply", kPly + "0 0 0\n1 0\n0 1 1\n0 0 0\n"}},
+                    "{d}/c.ply -o {d}/out",
+                    2,
                     "{d}/c.ply:9: PLY data line has fewer values than the 3 properties"},
-        RefusedCase{"yaml_key_given_twice", "pcd-to-map",
-                    {{"c.yaml", "voxel:\n  cell_m: 0.05\nvoxel:\n  cell_m: 0.1\n"},
-                     {"c.xyz", "0 0 0\n"}},
-                    "-c {d}/c.yaml {d}/c.xyz -o {d}/out", 2,
-                    "{d}/c.yaml:3: key 'voxel' is given twice"},
-        RefusedCase{"yaml_nested_key_given_twice", "plan-route",
+        RefusedCase{
+            "yaml_key_given_twice",
+            "pcd-to-map",
+            {{"c.yaml", "voxel:\n  cell_m: 0.05\nvoxel:\n  cell_m: 0.1\n"}, {"c.xyz", "0 0 0\n"}},
+            "-c {d}/c.yaml {d}/c.xyz -o {d}/out",
+            2,
+            "{d}/c.yaml:3: key 'voxel' is given twice"},
+        RefusedCase{"yaml_nested_key_given_twice",
+                    "plan-route",
                     {{"c.yaml", "robot:\n  width_m: 0.5\n  width_m: 0.6\n"}},
                     "-c {d}/c.yaml --map {d}/m.pgm --resolution 0.05 --start 0,0 --goal 1,1 -o "
                     "{d}/out",
-                    2, "{d}/c.yaml:3: key 'robot.width_m' is given twice"},
-        RefusedCase{"map_yaml_mode_banana", "plan-route",
+                    2,
+                    "{d}/c.yaml:3: key 'robot.width_m' is given twice"},
+        RefusedCase{"map_yaml_mode_banana",
+                    "plan-route",
                     {{"m.yaml", kMapYaml + "mode: banana\n"}, {"m.pgm", map_fixtures::kPgm}},
-                    "--map {d}/m.yaml --start 0,0 --goal 0.05,0 -o {d}/out", 2,
+                    "--map {d}/m.yaml --start 0,0 --goal 0.05,0 -o {d}/out",
+                    2,
                     "{d}/m.yaml:4: key 'mode': 'banana' is not supported (only 'trinary'"},
-        RefusedCase{"scene_sim_seed_negative", "scene-sim", {}, "--random --seed -1 -o {d}/out",
-                    2, "--seed"},
-        RefusedCase{"explore_sim_seed_negative", "explore-sim", {{"m.pgm", map_fixtures::kPgm}},
-                    "{d}/m.pgm --resolution 0.05 --seed -1 -o {d}/out", 2, "--seed"},
-        RefusedCase{"tdtk_scan_without_pose", "pcd-to-map", {{"scan000.3d", tdtk_room()}},
-                    "{d} -q -o {d}/out", 0,
+        RefusedCase{"scene_sim_seed_negative",
+                    "scene-sim",
+                    {},
+                    "--random --seed -1 -o {d}/out",
+                    2,
+                    "--seed"},
+        RefusedCase{"explore_sim_seed_negative",
+                    "explore-sim",
+                    {{"m.pgm", map_fixtures::kPgm}},
+                    "{d}/m.pgm --resolution 0.05 --seed -1 -o {d}/out",
+                    2,
+                    "--seed"},
+        RefusedCase{"tdtk_scan_without_pose",
+                    "pcd-to-map",
+                    {{"scan000.3d", tdtk_room()}},
+                    "{d} -q -o {d}/out",
+                    0,
                     "pcd-to-map: warning: {d}/scan000.3d: no scan000.pose or scan000.frames "
                     "beside it: read with the identity pose"}),
     [](const auto& info) { return info.param.name; });
@@ -165,8 +196,8 @@ TEST(PlanRouteBudget, ReachingItIsExitThreeWithTheBudgetNamed) {
   const std::string map = "--map " + small_map(dir).string();
   // Moves of at most 0.5 m to a goal 2.2 m away need five moves; two expanded nodes cannot.
   test::write_text(dir / "c.yaml", "planner:\n  d_max_m: 0.5\n  max_nodes: 2\n");
-  auto r = run_limited("plan-route", map + " -c " + (dir / "c.yaml").string() + kPlanArgs +
-                                         (dir / "out").string());
+  auto r = run_limited(
+      "plan-route", map + " -c " + (dir / "c.yaml").string() + kPlanArgs + (dir / "out").string());
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.err.find("plan-route: no route found within the work budget: planner.max_nodes 2 "
                        "nodes reached"),
@@ -177,8 +208,8 @@ TEST(PlanRouteBudget, ReachingItIsExitThreeWithTheBudgetNamed) {
       << summary;
   // max_seconds is validated beside its definition.
   test::write_text(dir / "s.yaml", "planner:\n  max_seconds: 0\n");
-  r = run_limited("plan-route", map + " -c " + (dir / "s.yaml").string() + kPlanArgs +
-                                    (dir / "out2").string());
+  r = run_limited("plan-route",
+                  map + " -c " + (dir / "s.yaml").string() + kPlanArgs + (dir / "out2").string());
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("planner.max_seconds: must be in (0, 86400] s"), std::string::npos) << r.err;
 }

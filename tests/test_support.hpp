@@ -1,6 +1,8 @@
 #pragma once
 // Shared helpers for the test suite: where the real data lives, scratch directories, running apps.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -9,9 +11,6 @@
 #include <random>
 #include <sstream>
 #include <string>
-
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace indoormap::test {
 
@@ -27,11 +26,11 @@ inline std::optional<std::filesystem::path> shared_data_dir() {
 }
 
 /// The Jacobs scan folder, or skips the current test with a clear message.
-#define INDOORMAP_REQUIRE_DATA(var, sub)                                                   \
-  auto var##_root = ::indoormap::test::shared_data_dir();                                  \
-  if (!var##_root || !std::filesystem::exists(*var##_root / (sub)))                        \
+#define INDOORMAP_REQUIRE_DATA(var, sub)                                                    \
+  auto var##_root = ::indoormap::test::shared_data_dir();                                   \
+  if (!var##_root || !std::filesystem::exists(*var##_root / (sub)))                         \
     GTEST_SKIP() << "real data '" << (sub) << "' not found: set INDOORMAP_DATA or provide " \
-                 << "../shared/data next to the source tree";                             \
+                 << "../shared/data next to the source tree";                               \
   const std::filesystem::path var = *var##_root / (sub)
 
 /// A fresh, empty scratch directory unique to the running test.

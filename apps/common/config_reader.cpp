@@ -21,7 +21,8 @@ std::string joined(const std::set<std::string>& names, const char* separator) {
 
 // yaml-cpp keeps both entries of a key given twice and node[key] finds the first, so the second
 // would be ignored without a word: every mapping, at any depth, is checked.
-static void check_unique_keys(const YAML::Node& n, const std::string& path, const std::string& where) {
+static void check_unique_keys(const YAML::Node& n, const std::string& path,
+                              const std::string& where) {
   if (n.IsSequence()) {
     for (std::size_t i = 0; i < n.size(); ++i)
       check_unique_keys(n[i], path, where + "[" + std::to_string(i) + "]");

@@ -40,7 +40,8 @@ formats::RosMapMeta read_map_yaml(const fs::path& yaml_path) {
     throw InputError(yaml_path.string(), "missing key 'image'");
   m.meta.image = root["image"].as<std::string>();
   // The image is read the trinary way (map_server's default); any other mode would be misread.
-  if (const YAML::Node mode = root["mode"]; mode && !(mode.IsScalar() && mode.Scalar() == "trinary"))
+  if (const YAML::Node mode = root["mode"];
+      mode && !(mode.IsScalar() && mode.Scalar() == "trinary"))
     throw InputError(yaml_path.string(),
                      "key 'mode': '" + (mode.IsScalar() ? mode.Scalar() : std::string("?")) +
                          "' is not supported (only 'trinary'; 'scale' and 'raw' maps are not "

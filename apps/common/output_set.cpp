@@ -55,9 +55,8 @@ void check_places(const fs::path& out, const std::vector<std::string>& files) {
     for (fs::path p = fs::path(f).parent_path(); !p.empty(); p = p.parent_path()) {
       const auto st = fs::symlink_status(out / p, ec);
       if (fs::exists(st) && !fs::is_directory(fs::status(out / p, ec)))
-        throw OutputError((out / p).string(),
-                          "exists and is not a directory (it should hold " + f +
-                              "); nothing was written");
+        throw OutputError((out / p).string(), "exists and is not a directory (it should hold " + f +
+                                                  "); nothing was written");
     }
     if (fs::is_directory(fs::symlink_status(target, ec)))
       throw OutputError(target.string(), "is a directory; nothing was written");
@@ -74,7 +73,8 @@ void remove_with_empty_parents(const fs::path& out, const std::string& file) {
 
 }  // namespace
 
-OutputSet::OutputSet(const fs::path& out_dir, std::string app) : out_(out_dir), app_(std::move(app)) {
+OutputSet::OutputSet(const fs::path& out_dir, std::string app)
+    : out_(out_dir), app_(std::move(app)) {
   ensure_writable_dir(out_);
   static std::atomic<unsigned> counter{0};
   std::error_code ec;

@@ -1,8 +1,8 @@
 #include "pipeline_run.hpp"
 
 #include <chrono>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 
 #include "indoormap/core/atomic_file.hpp"
@@ -128,13 +128,13 @@ PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_
     std::snprintf(extent, sizeof extent, "%.3g x %.3g m", g.width() * g.cell_m(),
                   g.height() * g.cell_m());
     std::snprintf(cell, sizeof cell, "%g", g.cell_m());
-    throw InputError(names, "no map: the layout has no wall, furniture or free cell (" +
-                                std::to_string(run.kept) + " points kept over " + extent +
-                                (dropped ? ", " + std::to_string(dropped) +
-                                               " non-finite or beyond float range dropped"
-                                         : std::string()) +
-                                "): too few points, or too far apart for cells of " + cell +
-                                " m (check --unit)");
+    throw InputError(
+        names,
+        "no map: the layout has no wall, furniture or free cell (" + std::to_string(run.kept) +
+            " points kept over " + extent +
+            (dropped ? ", " + std::to_string(dropped) + " non-finite or beyond float range dropped"
+                     : std::string()) +
+            "): too few points, or too far apart for cells of " + cell + " m (check --unit)");
   }
   return run;
 }

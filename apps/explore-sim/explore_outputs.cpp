@@ -1,6 +1,5 @@
 #include "explore_outputs.hpp"
 
-
 #include <cmath>
 #include <cstdio>
 #include <numbers>

@@ -110,10 +110,10 @@ int run(int argc, char** argv) {
   const auto safe = planning::safe_zone(map.cells, templates.disk, cfg.safe_zone);
   const double safe_ms = ms_since(t0);
   if (!a.quiet) {
-    std::fprintf(stderr, "plan-route: %s: %d x %d cells of %.3f m; searching (budget %lld nodes, %g s)\n",
-                 a.map_path.c_str(), map.geometry.width(), map.geometry.height(),
-                 map.geometry.cell_m(), static_cast<long long>(cfg.planner.max_nodes),
-                 cfg.planner.max_seconds);
+    std::fprintf(
+        stderr, "plan-route: %s: %d x %d cells of %.3f m; searching (budget %lld nodes, %g s)\n",
+        a.map_path.c_str(), map.geometry.width(), map.geometry.height(), map.geometry.cell_m(),
+        static_cast<long long>(cfg.planner.max_nodes), cfg.planner.max_seconds);
     cfg.planner.progress = [](const char* search, std::int64_t nodes, double s) {
       std::fprintf(stderr, "plan-route: %s search: %lld nodes expanded, %.0f s\n", search,
                    static_cast<long long>(nodes), s);
@@ -142,7 +142,8 @@ int run(int argc, char** argv) {
       {"found", !result.routes.empty()},
       {"message", result.message},
       {"routes", result.routes.size()},
-      {"budget_reached", result.budget_reached.empty() ? json(nullptr) : json(result.budget_reached)},
+      {"budget_reached",
+       result.budget_reached.empty() ? json(nullptr) : json(result.budget_reached)},
       {"best", result.routes.empty() ? json(nullptr)
                                      : json{{"moves", result.routes[0].moves},
                                             {"turns", result.routes[0].turns},

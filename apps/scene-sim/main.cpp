@@ -56,7 +56,7 @@ Args parse_args(int argc, char** argv) {
   auto* seed_opt = app.add_option("--seed", a.seed,
                                   "Seed of the random scene and of the noise (default 1; for a "
                                   "scene file it overrides the file's seed)")
-                      ->check(CLI::NonNegativeNumber);  // "-1" would wrap to 2^64-1
+                       ->check(CLI::NonNegativeNumber);  // "-1" would wrap to 2^64-1
   app.add_option("--rooms", a.rooms, "Random scene: number of furnished rooms (default 1)")
       ->check(CLI::Range(1, 200));
   app.add_option("-o,--out", a.out_dir, "Output directory (created if needed)");

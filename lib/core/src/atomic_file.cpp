@@ -19,8 +19,8 @@ namespace {
 
 fs::path temp_name_for(const fs::path& path) {
   static std::atomic<unsigned> counter{0};
-  return path.parent_path() / ("." + path.filename().string() + ".tmp." + std::to_string(::getpid()) +
-                               "." + std::to_string(counter++));
+  return path.parent_path() / ("." + path.filename().string() + ".tmp." +
+                               std::to_string(::getpid()) + "." + std::to_string(counter++));
 }
 
 }  // namespace
@@ -65,7 +65,9 @@ void ensure_writable_dir(const fs::path& dir) {
   const fs::path probe = temp_name_for(dir / "probe");
   {
     std::ofstream out(probe, std::ios::binary);
-    if (!out) throw OutputError(dir.string(), std::string("directory is not writable: ") + std::strerror(errno));
+    if (!out)
+      throw OutputError(dir.string(),
+                        std::string("directory is not writable: ") + std::strerror(errno));
   }
   fs::remove(probe, ec);
 }

@@ -19,7 +19,8 @@ std::uint64_t check_input_file(const fs::path& path, std::uint64_t max_bytes,
   if (ec || !fs::exists(st)) {
     if (fs::is_symlink(fs::symlink_status(path, ec)))
       throw InputError(file, "is a dangling symlink (its target does not exist)");
-    throw InputError(file, role.empty() ? "no such file" : "cannot open " + role + ": no such file");
+    throw InputError(file,
+                     role.empty() ? "no such file" : "cannot open " + role + ": no such file");
   }
   if (fs::is_directory(st))
     throw InputError(file, "is a directory, expected " + (role.empty() ? "a file" : role));
@@ -40,9 +41,9 @@ std::ifstream open_input_file(const fs::path& path, std::uint64_t max_bytes,
   check_input_file(path, max_bytes, role);
   std::ifstream in(path, std::ios::binary);
   if (!in)
-    throw InputError(path.string(), (role.empty() ? std::string("cannot open: ")
-                                                  : "cannot open " + role + ": ") +
-                                        std::strerror(errno));
+    throw InputError(path.string(),
+                     (role.empty() ? std::string("cannot open: ") : "cannot open " + role + ": ") +
+                         std::strerror(errno));
   return in;
 }
 

@@ -214,7 +214,8 @@ struct RowRaster {
     for (std::size_t i = 0, n = p.size(), j = n - 1; i < n; j = i++) {
       const auto& a = p[i];
       const auto& b = p[j];
-      if ((a.y() > y) != (b.y() > y)) xs.push_back((b.x() - a.x()) * (y - a.y()) / (b.y() - a.y()) + a.x());
+      if ((a.y() > y) != (b.y() > y))
+        xs.push_back((b.x() - a.x()) * (y - a.y()) / (b.y() - a.y()) + a.x());
     }
     std::sort(xs.begin(), xs.end());
     for (std::size_t k = 0; k + 1 < xs.size(); k += 2) {

@@ -172,7 +172,8 @@ RosMap decode_ros_map(const RosMapMeta& meta, const fs::path& yaml_path, std::in
     if (!fs::exists(image, ec))
       throw InputError(image.string(),
                        "map image not found (named by 'image' in " + yaml_path.string() + ")");
-    check_input_file(image, kNoSizeLimit, "the map image named by 'image' in " + yaml_path.string());
+    check_input_file(image, kNoSizeLimit,
+                     "the map image named by 'image' in " + yaml_path.string());
   }
   const cv::Mat img = decode_gray(image, max_cells);
   const int w = img.cols, h = img.rows;

@@ -144,8 +144,8 @@ ExactResult exact_min_moves(const Grid<SafeCell>& safe, CellIndex start, CellInd
 }
 
 ExactResult detail::exact_search(const Grid<SafeCell>& safe, CellIndex start, CellIndex goal,
-                                 const NeighbourhoodTemplate& t, const PlannerParams& p,
-                                 int bound, SearchBudget& budget) {
+                                 const NeighbourhoodTemplate& t, const PlannerParams& p, int bound,
+                                 SearchBudget& budget) {
   ExactResult res;
   const int w = safe.width, h = safe.height;
   if (!safe.contains(start.col, start.row) || !safe.contains(goal.col, goal.row) ||

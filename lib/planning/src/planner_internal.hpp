@@ -2,9 +2,9 @@
 // Internal to im_planning: what planner.cpp and paper_search.cpp share.
 #include <array>
 #include <chrono>
-#include <string>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "indoormap/planning/planner.hpp"
@@ -23,8 +23,7 @@ inline std::size_t idx(int width, CellIndex c) {
 /// (max_nodes) and seconds over all of them (max_seconds), with progress about once a second.
 class SearchBudget {
  public:
-  explicit SearchBudget(const PlannerParams& p)
-      : p_(p), start_(std::chrono::steady_clock::now()) {}
+  explicit SearchBudget(const PlannerParams& p) : p_(p), start_(std::chrono::steady_clock::now()) {}
   /// Counts one expanded node of `search`; false (and reached() set) when over the budget. The
   /// clock is read every 16 nodes only (one node can take milliseconds on a large template).
   bool spend(const char* search, std::int64_t& nodes) {

@@ -3,7 +3,8 @@
 // clouds, CARMEN logs). Before a reader opens a path it calls check_input_file (or reads through
 // read_input_file / open_input_file), so that every reader refuses the same things with the same
 // messages, all InputError naming the file (exit code 2):
-//   - a missing path:                     "F: no such file" (or "F: cannot open ROLE: no such file")
+//   - a missing path:                     "F: no such file" (or "F: cannot open ROLE: no such
+//   file")
 //   - a directory:                        "F: is a directory, expected a file" (or "... ROLE")
 //   - a FIFO, socket or device:           "F: is not a regular file (a FIFO, socket or device)"
 //                                         (a FIFO would block open() until a writer comes)

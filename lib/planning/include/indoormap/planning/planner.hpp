@@ -8,8 +8,8 @@
 // its length is at most D_max and, unless it is the route's last move, at least D_min.
 #include <Eigen/Core>
 #include <cstdint>
-#include <limits>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
