@@ -67,8 +67,6 @@ INSTANTIATE_TEST_SUITE_P(
         ::testing::Values(
             InputCase{"pcd_to_map_config", "pcd-to-map", "-c {bad} {d}/c.xyz -o {d}/out", "f.yaml"},
             InputCase{"pcd_to_map_cloud", "pcd-to-map", "{bad} -o {d}/out", "f.pcd"},
-            InputCase{"furniture_extract_config", "furniture-extract",
-                      "-c {bad} {d}/c.xyz -o {d}/out", "f.yaml"},
             InputCase{"scene_sim_scene", "scene-sim", "{bad} -o {d}/out", "s.yaml"},
             InputCase{"scene_sim_config", "scene-sim", "--random -c {bad} -o {d}/out", "c.yaml"},
             InputCase{"plan_route_map_yaml", "plan-route", "--map {bad}" + kPlan, "map.yaml"},
@@ -79,11 +77,7 @@ INSTANTIATE_TEST_SUITE_P(
             InputCase{"map_eval_truth", "map-eval", "--truth {bad} --result {d}/result -o {d}/out",
                       "t.json"},
             InputCase{"laser_to_map_log", "laser-to-map", "{bad} -o {d}/out", "l.log"},
-            InputCase{"laser_to_map_config", "laser-to-map", "-c {bad} {d}/c.xyz -o {d}/out",
-                      "c.yaml"},
-            InputCase{"explore_sim_map", "explore-sim", "{bad} -o {d}/out", "map.yaml"},
-            InputCase{"explore_sim_config", "explore-sim",
-                      "-c {bad} {d}/m.pgm --resolution 0.05 -o {d}/out", "c.yaml"}),
+            InputCase{"explore_sim_map", "explore-sim", "{bad} -o {d}/out", "map.yaml"}),
         ::testing::Values(Kind::kFifo, Kind::kDirectory)),
     [](const auto& info) {
       return std::get<0>(info.param).name +
