@@ -3,8 +3,10 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <random>
 
 #include "indoormap/core/errors.hpp"
+#include "indoormap/core/polygon.hpp"
 #include "indoormap/formats/ground_truth_json.hpp"
 #include "indoormap/formats/json.hpp"
 #include "indoormap/formats/pgm.hpp"
@@ -60,7 +62,9 @@ fs::path make_truth(const fs::path& dir) {
   return dir / "ground_truth.json";
 }
 
-json read_json(const fs::path& p) { return json::parse(test::read_text(p)); }
+json read_json(const fs::path& p) {
+  return json::parse(test::read_text(p));
+}
 
 }  // namespace
 
@@ -119,7 +123,8 @@ TEST(EvalObjects, MatchingRecallPrecisionAndHeights) {
   EXPECT_EQ(s.missed, std::vector<std::string>{"c"});
   EXPECT_EQ(s.spurious, std::vector<std::string>{"r2"});
   // Half overlap (IoU 1/3) is not a match.
-  const ObjectScores t = evaluate_objects({truth[0]}, {{"h", "", rectangle({0.5, 0}, {1, 1}, 0), {}, {}, true}}, 0.5);
+  const ObjectScores t =
+      evaluate_objects({truth[0]}, {{"h", "", rectangle({0.5, 0}, {1, 1}, 0), {}, {}, true}}, 0.5);
   EXPECT_EQ(t.matched, 0);
 }
 
@@ -160,15 +165,18 @@ TEST(EvalRooms, HausdorffAndAreaError) {
 }
 
 TEST(EvalPolygon, IouOfKnownShapes) {
-  EXPECT_NEAR(polygon_iou(rectangle({0, 0}, {1, 1}, 0), rectangle({0.5, 0}, {1, 1}, 0)), 1.0 / 3.0, 1e-3);
+  EXPECT_NEAR(polygon_iou(rectangle({0, 0}, {1, 1}, 0), rectangle({0.5, 0}, {1, 1}, 0)), 1.0 / 3.0,
+              1e-3);
   // Same square turned by 45 degrees: intersection = the regular octagon of inradius 0.5,
   // area 2 (sqrt 2 - 1) = 0.8284; union = 2 - 0.8284.
   const double oct = 2 * (std::sqrt(2.0) - 1);
-  EXPECT_NEAR(polygon_iou(rectangle({0, 0}, {1, 1}, 0), rectangle({0, 0}, {1, 1}, std::acos(-1.0) / 4)),
-              oct / (2 - oct), 2e-3);
+  EXPECT_NEAR(
+      polygon_iou(rectangle({0, 0}, {1, 1}, 0), rectangle({0, 0}, {1, 1}, std::acos(-1.0) / 4)),
+      oct / (2 - oct), 2e-3);
   EXPECT_EQ(polygon_iou(rectangle({0, 0}, {1, 1}, 0), rectangle({3, 0}, {1, 1}, 0)), 0.0);
   EXPECT_NEAR(std::abs(signed_area(circle_polygon({0, 0}, 1.0))), 3.14159265, 1e-6);
-  EXPECT_NEAR(boundary_hausdorff(rectangle({0, 0}, {2, 2}, 0), rectangle({0, 0}, {2.4, 2}, 0)), 0.2, 1e-9);
+  EXPECT_NEAR(boundary_hausdorff(rectangle({0, 0}, {2, 2}, 0), rectangle({0, 0}, {2.4, 2}, 0)), 0.2,
+              1e-9);
 }
 
 TEST(MapEval, HandMadeResultFilesGiveKnownScores) {
@@ -193,7 +201,7 @@ TEST(MapEval, HandMadeResultFilesGiveKnownScores) {
       }
     }
   }
-  ASSERT_EQ(n_cab, 20 * 8);   // 1.0 x 0.4 m at 5 cm
+  ASSERT_EQ(n_cab, 20 * 8);  // 1.0 x 0.4 m at 5 cm
   ASSERT_EQ(n_desk, 24 * 12);
   formats::write_layout_pgm(res / "layout.pgm", layout);
   formats::write_map_yaml(res / "map.yaml", formats::map_meta("map.pgm", tf.layout_geometry),
@@ -209,14 +217,17 @@ TEST(MapEval, HandMadeResultFilesGiveKnownScores) {
     {"type": "Feature", "properties": {"kind": "room"},
      "geometry": {"type": "Polygon", "coordinates": [[[0.05, 0], [4.05, 0], [4.05, 3], [0.05, 3], [0.05, 0]]]}}]})");
 
-  const auto r = test::run_app("map-eval", "--truth " + truth.string() + " --result " + res.string());
+  const auto r =
+      test::run_app("map-eval", "--truth " + truth.string() + " --result " + res.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json e = read_json(res / "eval.json");
   EXPECT_EQ(e["missing"].size(), 0u);
   const json& cls = e["layout"]["classes"];
   EXPECT_DOUBLE_EQ(cls["wall"]["iou"].get<double>(), 1.0);
-  EXPECT_DOUBLE_EQ(cls["furniture"]["iou"].get<double>(), static_cast<double>(n_desk) / (n_desk + n_cab));
-  EXPECT_DOUBLE_EQ(cls["free"]["iou"].get<double>(), static_cast<double>(n_free) / (n_free + n_cab));
+  EXPECT_DOUBLE_EQ(cls["furniture"]["iou"].get<double>(),
+                   static_cast<double>(n_desk) / (n_desk + n_cab));
+  EXPECT_DOUBLE_EQ(cls["free"]["iou"].get<double>(),
+                   static_cast<double>(n_free) / (n_free + n_cab));
   const json& ob = e["objects"];
   EXPECT_EQ(ob["truth_count"], 2);  // cabinet and desk; the lamp hangs from the ceiling
   EXPECT_EQ(ob["matched"], 1);
@@ -234,8 +245,9 @@ TEST(MapEval, HandMadeResultFilesGiveKnownScores) {
   (void)truth_cells;
 
   // With the lamps, three objects are expected.
-  const auto r2 = test::run_app("map-eval", "--truth " + truth.string() + " --result " + res.string() +
-                                                " --include-hanging -o " + (dir / "e2").string());
+  const auto r2 =
+      test::run_app("map-eval", "--truth " + truth.string() + " --result " + res.string() +
+                                    " --include-hanging -o " + (dir / "e2").string());
   ASSERT_EQ(r2.exit_code, 0) << r2.err;
   EXPECT_EQ(read_json(dir / "e2" / "eval.json")["objects"]["truth_count"], 3);
   EXPECT_EQ(read_json(dir / "e2" / "eval.json")["objects"]["result_count"], 4);
@@ -285,13 +297,63 @@ TEST(MapEval, BadInputsExitWith2AndNameTheFile) {
   test::write_text(res / "objects.json", R"({"objects": [{"id": 1, "z_max_m": 1}]})");
   r = test::run_app("map-eval", "--truth " + truth.string() + " --result " + res.string());
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("objects.json: key 'objects[0]': needs 'footprint' or 'obb'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("objects.json: key 'objects[0]': needs 'footprint' or 'obb'"),
+            std::string::npos)
+      << r.err;
   test::write_text(res / "objects.json", "{not json");
   r = test::run_app("map-eval", "--truth " + truth.string() + " --result " + res.string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("invalid JSON"), std::string::npos) << r.err;
-  r = test::run_app("map-eval", "--truth " + (dir / "nope.json").string() + " --result " + res.string());
+  r = test::run_app("map-eval",
+                    "--truth " + (dir / "nope.json").string() + " --result " + res.string());
   EXPECT_EQ(r.exit_code, 2);
   r = test::run_app("map-eval", "--result " + res.string());
   EXPECT_EQ(r.exit_code, 2);
+}
+
+namespace {
+
+// The cell-by-cell raster IoU polygon_iou used before its row scan (the reference).
+double iou_cell_by_cell(const Polygon& a, const Polygon& b, double cell_m) {
+  const auto [alo, ahi] = bounds(a);
+  const auto [blo, bhi] = bounds(b);
+  const Eigen::Vector2d lo = alo.cwiseMin(blo), hi = ahi.cwiseMax(bhi);
+  if (alo.x() > bhi.x() || blo.x() > ahi.x() || alo.y() > bhi.y() || blo.y() > ahi.y()) return 0.0;
+  const double cell = std::max(cell_m, std::sqrt((hi - lo).prod() / 4e6));
+  const int w = static_cast<int>(std::ceil((hi.x() - lo.x()) / cell));
+  const int h = static_cast<int>(std::ceil((hi.y() - lo.y()) / cell));
+  std::int64_t inter = 0, uni = 0;
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) {
+      const Eigen::Vector2d p(lo.x() + (c + 0.5) * cell, lo.y() + (r + 0.5) * cell);
+      const bool ia = contains(a, p), ib = contains(b, p);
+      inter += ia && ib;
+      uni += ia || ib;
+    }
+  return uni > 0 ? static_cast<double>(inter) / static_cast<double>(uni) : 0.0;
+}
+
+}  // namespace
+
+TEST(PolygonIou, RowScanEqualsTheCellByCellReferenceExactly) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), s(0.05, 1.5);
+  int overlapping = 0;
+  for (int k = 0; k < 300; ++k) {
+    Polygon a = rectangle({u(rng), u(rng)}, {s(rng), s(rng)}, 3 * u(rng));
+    Polygon b;
+    if (k % 3 == 0) {  // a non-convex star, vertices on grid-aligned values too
+      for (int i = 0; i < 10; ++i) {
+        const double r = i % 2 ? 0.3 : 0.8, t = i * 0.6283185307179586;
+        b.push_back({0.5 * std::round(u(rng)) + r * std::cos(t), r * std::sin(t)});
+      }
+    } else {
+      b = rectangle({u(rng), u(rng)}, {s(rng), s(rng)}, 3 * u(rng));
+    }
+    const double cell = k % 2 ? 0.01 : 0.05;
+    const double ref = iou_cell_by_cell(a, b, cell);
+    EXPECT_EQ(polygon_iou(a, b, cell), ref) << k;  // the same cell counts: bit-identical
+    overlapping += ref > 0;
+  }
+  EXPECT_GT(overlapping, 50);
 }

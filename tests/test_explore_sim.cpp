@@ -62,9 +62,13 @@ TEST(ExploreSim, SingleRoomOutputsAndDeterminism) {
   const auto path = nlohmann::json::parse(test::read_text(dir / "a" / "path.geojson"));
   EXPECT_GE(path["features"][0]["geometry"]["coordinates"].size(), 2u);
   EXPECT_NE(test::read_text(dir / "a" / "map.yaml").find("image: map.pgm"), std::string::npos);
-  // No staging directory left behind.
+  // No staging directory left behind (beside or inside); the one hidden file is the manifest.
   for (const auto& e : fs::directory_iterator(dir / "a"))
-    EXPECT_NE(e.path().filename().string().front(), '.') << e.path();
+    if (e.path().filename() != ".indoormap-outputs") {
+      EXPECT_NE(e.path().filename().string().front(), '.') << e.path();
+    }
+  for (const auto& e : fs::directory_iterator(dir))
+    EXPECT_EQ(e.path().filename().string().find("indoormap-staging"), std::string::npos);
 
   // The same seed: the same explore.json, path and map; -q: nothing on stderr.
   r = test::run_app("explore-sim", map + " --seed 3 -q -o " + (dir / "b").string());

@@ -12,7 +12,6 @@
 #include "indoormap/formats/pgm.hpp"
 #include "indoormap/formats/room_geojson.hpp"
 #include "indoormap/formats/ros_map.hpp"
-#include "map_yaml.hpp"
 #include "indoormap/formats/route_json.hpp"
 #include "indoormap/objects/objects.hpp"
 #include "indoormap/sim/eval.hpp"
@@ -20,14 +19,15 @@
 #include "indoormap/sim/simulate.hpp"
 #include "indoormap/sim/world.hpp"
 #include "map_fixtures.hpp"
+#include "map_yaml.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
 using map_fixtures::kPgm;
 using map_fixtures::png_header;
-using test::replace_all;
 using nlohmann::json;
+using test::replace_all;
 
 namespace {
 
@@ -368,7 +368,7 @@ INSTANTIATE_TEST_SUITE_P(
                 "keys 'free_thresh' <= 'occupied_thresh' must be numbers in [0, 1]"},
         MapCase{"image_not_found", kYaml, "<none>", "map image not found (named by 'image' in"},
         MapCase{"image_is_a_directory", replace_all(kYaml, "map.pgm", "."), kPgm,
-                "map image not found"},
+                "is a directory, expected the map image named by 'image' in"},
         MapCase{"image_not_pgm_or_png", kYaml, "GIF89a....",
                 "map image is neither PGM (P5/P2) nor PNG"},
         MapCase{"pgm_header_malformed", kYaml, "P5\n2 x\n255\n", "malformed PGM header"},

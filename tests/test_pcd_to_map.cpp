@@ -22,7 +22,9 @@ std::string room_xyz() {
   std::ostringstream s;
   s.precision(4);
   s << std::fixed << "# synthetic test room\n";
-  auto put = [&](double x, double y, double z) { s << x + n(rng) << " " << y + n(rng) << " " << z + n(rng) << "\n"; };
+  auto put = [&](double x, double y, double z) {
+    s << x + n(rng) << " " << y + n(rng) << " " << z + n(rng) << "\n";
+  };
   const double w = 6, d = 5, h = 2.7, st = 0.03;
   for (double x = 0; x <= w; x += st)
     for (double y = 0; y <= d; y += st) {
@@ -57,7 +59,9 @@ fs::path room_file() {
   return p;
 }
 
-bool empty_or_missing(const fs::path& dir) { return !fs::exists(dir) || fs::is_empty(dir); }
+bool empty_or_missing(const fs::path& dir) {
+  return !fs::exists(dir) || fs::is_empty(dir);
+}
 
 }  // namespace
 
@@ -84,8 +88,11 @@ TEST(PcdToMap, WritesEveryOutputInItsFormat) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* f : {"map.pgm", "map.yaml", "layout.pgm", "layout.png", "summary.json"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
-  // No temporary files are left behind.
-  for (const auto& e : fs::directory_iterator(out)) EXPECT_NE(e.path().filename().string()[0], '.');
+  // No temporary files are left behind; the one hidden file is the output-set manifest.
+  for (const auto& e : fs::directory_iterator(out))
+    if (e.path().filename() != ".indoormap-outputs") {
+      EXPECT_NE(e.path().filename().string()[0], '.') << e.path();
+    }
 
   // The ROS map loads the way map_server reads it, and agrees with the layout classes.
   formats::RosMap ros = app::read_ros_map(out / "map.yaml");
@@ -98,7 +105,8 @@ TEST(PcdToMap, WritesEveryOutputInItsFormat) {
   int free_cells = 0;
   for (int r = 0; r < h; ++r)
     for (int c = 0; c < w; ++c) {
-      const auto raw = static_cast<Cell>(pgm[header.size() + static_cast<std::size_t>(h - 1 - r) * w + c]);
+      const auto raw =
+          static_cast<Cell>(pgm[header.size() + static_cast<std::size_t>(h - 1 - r) * w + c]);
       const Cell ros_cell = ros.cells.at(c, r);
       const Cell expected = raw == Cell::kFurniture ? Cell::kWall : raw;
       EXPECT_EQ(ros_cell, expected);
@@ -146,12 +154,14 @@ TEST(PcdToMap, DocumentedDefaultsAreTheCodeDefaults) {
 TEST(PcdToMap, ConfigErrorsNameFileKeyAndLine) {
   const auto dir = test::scratch_dir();
   test::write_text(dir / "typo.yaml", "voxel:\n  cel_m: 0.1\n");
-  auto r = run_app("pcd-to-map", room_file().string() + " -c " + (dir / "typo.yaml").string() + " -o " + (dir / "o").string());
+  auto r = run_app("pcd-to-map", room_file().string() + " -c " + (dir / "typo.yaml").string() +
+                                     " -o " + (dir / "o").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("typo.yaml:2"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("voxel.cel_m"), std::string::npos) << r.err;
   test::write_text(dir / "type.yaml", "level:\n  max_tilt_deg: steep\n");
-  r = run_app("pcd-to-map", room_file().string() + " -c " + (dir / "type.yaml").string() + " -o " + (dir / "o").string());
+  r = run_app("pcd-to-map", room_file().string() + " -c " + (dir / "type.yaml").string() + " -o " +
+                                (dir / "o").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("level.max_tilt_deg"), std::string::npos) << r.err;
   r = run_app("pcd-to-map", room_file().string() + " --cell-m -1 -o " + (dir / "o").string());
@@ -170,7 +180,9 @@ struct BadInput {
   std::string extra_args;
 };
 
-void PrintTo(const BadInput& b, std::ostream* os) { *os << b.name; }
+void PrintTo(const BadInput& b, std::ostream* os) {
+  *os << b.name;
+}
 
 class PcdToMapBadInput : public ::testing::TestWithParam<BadInput> {};
 
@@ -191,7 +203,8 @@ namespace {
 std::string flat_cloud() {
   std::string s;
   for (int i = 0; i < 50; ++i)
-    for (int j = 0; j < 50; ++j) s += std::to_string(i * 0.05) + " " + std::to_string(j * 0.05) + " 1.0\n";
+    for (int j = 0; j < 50; ++j)
+      s += std::to_string(i * 0.05) + " " + std::to_string(j * 0.05) + " 1.0\n";
   return s;
 }
 }  // namespace
@@ -201,29 +214,36 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         BadInput{"missing", "nothere.pcd", "<missing>", "nothere.pcd: no such file", ""},
         BadInput{"empty_xyz", "empty.xyz", "", "empty.xyz: empty cloud: no points", ""},
-        BadInput{"malformed_line", "bad.xyz", "1 2 3\n4 5 6\n7 eight 9\n", "bad.xyz:3: malformed line, expected 'x y z ...'", ""},
+        BadInput{"malformed_line", "bad.xyz", "1 2 3\n4 5 6\n7 eight 9\n",
+                 "bad.xyz:3: malformed line, expected 'x y z ...'", ""},
         BadInput{"empty_pcd", "empty.pcd", "", "empty.pcd: empty file (no PCD header)", ""},
         BadInput{"pcd_without_fields", "nofields.pcd",
-                 "VERSION 0.7\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n1 2 3\n",
+                 "VERSION 0.7\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 1\nHEIGHT 1\nPOINTS "
+                 "1\nDATA ascii\n1 2 3\n",
                  "nofields.pcd:8: PCD header: no FIELDS line before DATA", ""},
         BadInput{"pcd_huge_dims", "huge.pcd",
-                 "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 65536\nHEIGHT 65536\n"
+                 "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH "
+                 "65536\nHEIGHT 65536\n"
                  "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 0\nDATA binary\n",
                  "huge.pcd:9: PCD header: WIDTH 65536 x HEIGHT 65536 does not equal POINTS 0", ""},
         BadInput{"pcd_huge_points", "short.pcd",
-                 "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 4000000000\nHEIGHT 1\n"
+                 "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH "
+                 "4000000000\nHEIGHT 1\n"
                  "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 4000000000\nDATA binary\nabc",
-                 "short.pcd:10: PCD data section too short for POINTS 4000000000 (truncated file?)", ""},
+                 "short.pcd:10: PCD data section too short for POINTS 4000000000 (truncated file?)",
+                 ""},
         BadInput{"all_nan", "nan.xyz", "nan nan nan\nnan 1 2\ninf 0 0\n",
                  "nan.xyz: empty cloud: all 3 points are non-finite (NaN / Inf)", ""},
         BadInput{"one_height", "flat.xyz", flat_cloud(), "one height", ""},
-        BadInput{"unknown_extension", "cloud.las", "1 2 3\n", "cloud.las: unknown file type '.las' (supported:", ""}),
+        BadInput{"unknown_extension", "cloud.las", "1 2 3\n",
+                 "cloud.las: unknown file type '.las' (supported:", ""}),
     [](const auto& info) { return info.param.name; });
 
 TEST(PcdToMap, GridAboveBudgetIsRefusedBeforeAllocating) {
   const auto dir = test::scratch_dir();
   test::write_text(dir / "small.yaml", "voxel:\n  max_cells: 1000\n");
-  auto r = run_app("pcd-to-map", room_file().string() + " -c " + (dir / "small.yaml").string() + " -o " + (dir / "out").string());
+  auto r = run_app("pcd-to-map", room_file().string() + " -c " + (dir / "small.yaml").string() +
+                                     " -o " + (dir / "out").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("max_cells"), std::string::npos) << r.err;
   EXPECT_TRUE(empty_or_missing(dir / "out"));

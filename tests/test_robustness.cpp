@@ -410,5 +410,5 @@ INSTANTIATE_TEST_SUITE_P(
                      "map-eval",
                      {{"truth.json", kTruth}, {"truth.pgm", kPgm}, {"result/layout.pgm/", ""}},
                      kEval,
-                     "{d}/result/layout.pgm: not a regular file"}),
+                     "{d}/result/layout.pgm: is a directory, expected a PGM file"}),
     [](const auto& info) { return info.param.name; });

@@ -15,10 +15,11 @@ using namespace indoormap;
 
 namespace {
 
-std::string office_yaml() { return std::string(INDOORMAP_SOURCE_DIR) + "/scenes/office.yaml"; }
+std::string office_yaml() {
+  return std::string(INDOORMAP_SOURCE_DIR) + "/scenes/office.yaml";
+}
 
 }  // namespace
-
 
 TEST(SimOutput, BinaryPcdHeaderAndData) {
   const fs::path dir = test::scratch_dir();
@@ -26,7 +27,8 @@ TEST(SimOutput, BinaryPcdHeaderAndData) {
   cloud_io::write_pcd_binary((dir / "c.pcd").string(), pts, {0.5, 1.5, 1.25});
   const std::string b = test::read_text(dir / "c.pcd");
   const std::string header =
-      "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n"
+      "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F "
+      "F\n"
       "COUNT 1 1 1\nWIDTH 2\nHEIGHT 1\nVIEWPOINT 0.5 1.5 1.25 1 0 0 0\nPOINTS 2\nDATA binary\n";
   ASSERT_EQ(b.substr(0, header.size()), header);
   ASSERT_EQ(b.size(), header.size() + 24);
@@ -42,19 +44,26 @@ TEST(SimOutput, BinaryPcdHeaderAndData) {
 }
 
 TEST(SimOutput, SceneSimWritesByteIdenticalFilesForASeed) {
-  const fs::path a = test::scratch_dir() / "a", b = test::scratch_dir() / "b", c = test::scratch_dir() / "c";
+  const fs::path a = test::scratch_dir() / "a", b = test::scratch_dir() / "b",
+                 c = test::scratch_dir() / "c";
   const std::string args = " --random --seed 4 --rooms 2 --step-deg 1 --3dtk --sector-deg 120 -q";
   ASSERT_EQ(test::run_app("scene-sim", args + " -o " + a.string()).exit_code, 0);
   ASSERT_EQ(test::run_app("scene-sim", args + " -o " + b.string()).exit_code, 0);
-  ASSERT_EQ(test::run_app("scene-sim", " --random --seed 5 --rooms 2 --step-deg 1 -q -o " + c.string()).exit_code, 0);
+  ASSERT_EQ(
+      test::run_app("scene-sim", " --random --seed 5 --rooms 2 --step-deg 1 -q -o " + c.string())
+          .exit_code,
+      0);
   int compared = 0;
   for (const auto& e : fs::recursive_directory_iterator(a)) {
-    if (!e.is_regular_file() || e.path().filename() == "summary.json") continue;  // holds timings
+    if (!e.is_regular_file() || e.path().filename() == "summary.json" ||  // holds timings
+        e.path().filename() == ".indoormap-outputs")                      // the manifest
+      continue;
     const fs::path rel = fs::relative(e.path(), a);
     EXPECT_EQ(test::read_text(e.path()), test::read_text(b / rel)) << rel;
     ++compared;
   }
-  EXPECT_EQ(compared, 5 + 2 * 3 * 3);  // cloud, truth json, pgm, png, yaml; 3 positions x 3 sectors x 2
+  EXPECT_EQ(compared,
+            5 + 2 * 3 * 3);  // cloud, truth json, pgm, png, yaml; 3 positions x 3 sectors x 2
   EXPECT_NE(test::read_text(a / "cloud.pcd"), test::read_text(c / "cloud.pcd"));
 }
 
@@ -72,8 +81,10 @@ TEST(SimOutput, OfficeSceneMatchesTheAcceptance) {
   // The committed default cloud is what the committed scene file gives.
   const fs::path committed = fs::path(INDOORMAP_SOURCE_DIR) / "clouds" / "office";
   if (fs::exists(committed / "cloud.pcd")) {
-    for (const char* f : {"cloud.pcd", "ground_truth.json", "ground_truth_layout.pgm", "ground_truth_layout.yaml"})
-      EXPECT_EQ(test::read_text(dir / f), test::read_text(committed / f)) << f << " differs from clouds/office: regenerate it";
+    for (const char* f :
+         {"cloud.pcd", "ground_truth.json", "ground_truth_layout.pgm", "ground_truth_layout.yaml"})
+      EXPECT_EQ(test::read_text(dir / f), test::read_text(committed / f))
+          << f << " differs from clouds/office: regenerate it";
   }
 }
 
@@ -85,11 +96,14 @@ TEST(SimOutput, BadSceneFilesGetAClearErrorAndExitCode2) {
   const std::vector<Case> cases = {
       {"rooms: [\n  {polygon: [[0,0],[4,0]]\n", "bad.yaml:"},  // YAML syntax error
       {"scanners: [{position: [1, 1, 1]}]\n", "key 'rooms': missing"},
-      {"rooms:\n  - polygon: [[0,0],[4,0],[4,3],[0,3]]\n    heigth_m: 3\nscanners: [{position: [1,1,1]}]\n",
+      {"rooms:\n  - polygon: [[0,0],[4,0],[4,3],[0,3]]\n    heigth_m: 3\nscanners: [{position: "
+       "[1,1,1]}]\n",
        "bad.yaml:3: key 'rooms[0].heigth_m': unknown key"},
-      {"rooms:\n  - polygon: [[0,0],[4,0],[4,3],[0,3]]\n    doors: [{edge: 0, at_m: 3.9}]\nscanners: [{position: [1,1,1]}]\n",
+      {"rooms:\n  - polygon: [[0,0],[4,0],[4,3],[0,3]]\n    doors: [{edge: 0, at_m: "
+       "3.9}]\nscanners: [{position: [1,1,1]}]\n",
        "bad.yaml:3: key 'rooms[0].doors[0].at_m'"},
-      {"rooms:\n  - polygon: [[0,0],[4,0],[4,3],[0,3]]\nfurniture:\n  - {type: sofa, center: [1,1], size: [1,1]}\n"
+      {"rooms:\n  - polygon: [[0,0],[4,0],[4,3],[0,3]]\nfurniture:\n  - {type: sofa, center: "
+       "[1,1], size: [1,1]}\n"
        "scanners: [{position: [1,1,1]}]\n",
        "bad.yaml:4: key 'furniture[0].type'"},
       {"rooms:\n  - polygon: [[0,0],[4,0],[4,3],[0,3]]\nscanners: [{position: [1, one, 1]}]\n",
@@ -97,14 +111,20 @@ TEST(SimOutput, BadSceneFilesGetAClearErrorAndExitCode2) {
   };
   for (const auto& c : cases) {
     test::write_text(dir / "bad.yaml", c.yaml);
-    const auto r = test::run_app("scene-sim", (dir / "bad.yaml").string() + " -o " + (dir / "out").string());
+    const auto r =
+        test::run_app("scene-sim", (dir / "bad.yaml").string() + " -o " + (dir / "out").string());
     EXPECT_EQ(r.exit_code, 2) << c.yaml;
     EXPECT_NE(r.err.find("scene-sim: "), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find(c.expect), std::string::npos) << "expected '" << c.expect << "' in: " << r.err;
+    EXPECT_NE(r.err.find(c.expect), std::string::npos)
+        << "expected '" << c.expect << "' in: " << r.err;
     EXPECT_FALSE(fs::exists(dir / "out" / "cloud.pcd"));
   }
-  EXPECT_EQ(test::run_app("scene-sim", (dir / "missing.yaml").string() + " -o " + (dir / "out").string()).exit_code, 2);
-  EXPECT_EQ(test::run_app("scene-sim", "--random --rooms 0 -o " + (dir / "out").string()).exit_code, 2);
+  EXPECT_EQ(
+      test::run_app("scene-sim", (dir / "missing.yaml").string() + " -o " + (dir / "out").string())
+          .exit_code,
+      2);
+  EXPECT_EQ(test::run_app("scene-sim", "--random --rooms 0 -o " + (dir / "out").string()).exit_code,
+            2);
   EXPECT_EQ(test::run_app("scene-sim", "-o " + (dir / "out").string()).exit_code, 2);  // no scene
   const auto pc = test::run_app("scene-sim", office_yaml() + " --print-config");
   EXPECT_EQ(pc.exit_code, 0);
@@ -115,7 +135,9 @@ TEST(SimOutput, BadSceneFilesGetAClearErrorAndExitCode2) {
 // scan), to within the 0.01 mm of the 3DTK text's three decimals in cm.
 TEST(SimOutput, TdtkExportReadsBackAsTheSamePoints) {
   const fs::path dir = test::scratch_dir();
-  const auto r = test::run_app("scene-sim", "--random --seed 9 --rooms 2 --step-deg 0.8 --3dtk --sector-deg 40 -q -o " + dir.string());
+  const auto r = test::run_app(
+      "scene-sim",
+      "--random --seed 9 --rooms 2 --step-deg 0.8 --3dtk --sector-deg 40 -q -o " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto pcd = cloud_io::load_cloud((dir / "cloud.pcd").string());
   const auto tdtk = cloud_io::load_cloud((dir / "3dtk").string());

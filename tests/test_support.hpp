@@ -1,6 +1,8 @@
 #pragma once
 // Shared helpers for the test suite: where the real data lives, scratch directories, running apps.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -9,9 +11,6 @@
 #include <random>
 #include <sstream>
 #include <string>
-
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace indoormap::test {
 
@@ -27,11 +26,11 @@ inline std::optional<std::filesystem::path> shared_data_dir() {
 }
 
 /// The Jacobs scan folder, or skips the current test with a clear message.
-#define INDOORMAP_REQUIRE_DATA(var, sub)                                                   \
-  auto var##_root = ::indoormap::test::shared_data_dir();                                  \
-  if (!var##_root || !std::filesystem::exists(*var##_root / (sub)))                        \
+#define INDOORMAP_REQUIRE_DATA(var, sub)                                                    \
+  auto var##_root = ::indoormap::test::shared_data_dir();                                   \
+  if (!var##_root || !std::filesystem::exists(*var##_root / (sub)))                         \
     GTEST_SKIP() << "real data '" << (sub) << "' not found: set INDOORMAP_DATA or provide " \
-                 << "../shared/data next to the source tree";                             \
+                 << "../shared/data next to the source tree";                               \
   const std::filesystem::path var = *var##_root / (sub)
 
 /// A fresh, empty scratch directory unique to the running test.
@@ -71,14 +70,19 @@ struct RunResult {
   std::string out;  ///< stdout
 };
 
-/// Runs an app from the build's bin directory with a shell-quoted argument string.
-inline RunResult run_app(const std::string& app, const std::string& args) {
+/// Runs an app from the build's bin directory with a shell-quoted argument string. env: shell
+/// variable assignments put before the command ("A=1 B=2"); timeout_s > 0: the app is killed
+/// after that many seconds (coreutils timeout; exit code 124), so a hang fails the test.
+inline RunResult run_app(const std::string& app, const std::string& args,
+                         const std::string& env = "", int timeout_s = 0) {
   static int counter = 0;
   auto dir = std::filesystem::temp_directory_path() / "indoormap-tests" / "runs";
   std::filesystem::create_directories(dir);
   auto tag = std::to_string(::getpid()) + "_" + std::to_string(counter++);
   auto out = dir / ("out_" + tag), err = dir / ("err_" + tag);
-  std::string cmd = std::string(INDOORMAP_BIN_DIR) + "/" + app + " " + args + " >" + out.string() +
+  std::string cmd = env + (env.empty() ? "" : " ") +
+                    (timeout_s > 0 ? "timeout -k 5 " + std::to_string(timeout_s) + " " : "") +
+                    std::string(INDOORMAP_BIN_DIR) + "/" + app + " " + args + " >" + out.string() +
                     " 2>" + err.string() + " </dev/null";
   int status = std::system(cmd.c_str());
   RunResult r;

@@ -1,8 +1,7 @@
 #include "config_reader.hpp"
 
-#include <fstream>
-
 #include "indoormap/core/errors.hpp"
+#include "indoormap/core/input_file.hpp"
 
 namespace indoormap::app {
 
@@ -20,11 +19,32 @@ std::string joined(const std::set<std::string>& names, const char* separator) {
 
 }  // namespace
 
-YAML::Node load_yaml_file(const std::string& path, const std::string& cannot_open) {
+// yaml-cpp keeps both entries of a key given twice and node[key] finds the first, so the second
+// would be ignored without a word: every mapping, at any depth, is checked.
+static void check_unique_keys(const YAML::Node& n, const std::string& path,
+                              const std::string& where) {
+  if (n.IsSequence()) {
+    for (std::size_t i = 0; i < n.size(); ++i)
+      check_unique_keys(n[i], path, where + "[" + std::to_string(i) + "]");
+    return;
+  }
+  if (!n.IsMap()) return;
+  std::set<std::string> seen;
+  for (const auto& kv : n) {
+    if (!kv.first.IsScalar()) continue;  // refused by name where keys are read
+    const std::string key = where.empty() ? kv.first.Scalar() : where + "." + kv.first.Scalar();
+    if (!seen.insert(kv.first.Scalar()).second)
+      throw InputError(path, "key '" + key + "' is given twice", line_of(kv.first));
+    check_unique_keys(kv.second, path, key);
+  }
+}
+
+YAML::Node load_yaml_file(const std::string& path, const std::string& role) {
+  const std::string bytes = read_input_file(path, kMaxTextInputBytes, role);
   try {
-    std::ifstream in(path);
-    if (!in) throw InputError(path, cannot_open);
-    return YAML::Load(in);
+    YAML::Node root = YAML::Load(bytes);
+    check_unique_keys(root, path, "");
+    return root;
   } catch (const YAML::Exception& e) {
     throw InputError(path, "invalid YAML: " + e.msg,
                      e.mark.line >= 0 ? static_cast<std::size_t>(e.mark.line) + 1 : 0);
@@ -33,7 +53,7 @@ YAML::Node load_yaml_file(const std::string& path, const std::string& cannot_ope
 
 YAML::Node load_config_tree(const std::string& path,
                             const std::map<std::string, std::set<std::string>>& known) {
-  const YAML::Node root = load_yaml_file(path, "cannot open the config file");
+  const YAML::Node root = load_yaml_file(path, "the config file");
   if (root.IsNull()) return root;  // an empty file means "all defaults"
   std::set<std::string> section_names;
   for (const auto& [name, keys] : known)

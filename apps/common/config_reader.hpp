@@ -40,9 +40,11 @@ std::optional<T> config_integer(const YAML::Node& n) {
   return static_cast<T>(d);
 }
 
-/// Loads a YAML file. Throws InputError(path, cannot_open) when it cannot be read and
-/// InputError(path, "invalid YAML: ...", line) on a syntax error.
-YAML::Node load_yaml_file(const std::string& path, const std::string& cannot_open = "cannot open");
+/// Loads a YAML file through indoormap::read_input_file (a missing file, a directory, a FIFO or a
+/// file above kMaxTextInputBytes is refused naming the file and role, e.g. "the config file").
+/// Throws InputError(path, "invalid YAML: ...", line) on a syntax error and
+/// InputError(path, "key 'K' is given twice", line) when a mapping repeats a key.
+YAML::Node load_yaml_file(const std::string& path, const std::string& role = "the YAML file");
 
 /// Loads path and checks that every section and key is one of `known` (section -> keys; section
 /// "" lists top-level keys). Returns the tree (null for an empty file: all defaults). Throws

@@ -33,12 +33,20 @@ double number_at(const YAML::Node& root, const char* key, const fs::path& file,
 }  // namespace
 
 formats::RosMapMeta read_map_yaml(const fs::path& yaml_path) {
-  const YAML::Node root = load_yaml_file(yaml_path.string(), "cannot open the map YAML");
+  const YAML::Node root = load_yaml_file(yaml_path.string(), "the map YAML");
   if (!root.IsMap()) throw InputError(yaml_path.string(), "the map YAML is not a mapping");
   formats::RosMap m;  // the keys go to m.meta
   if (!root["image"] || !root["image"].IsScalar())
     throw InputError(yaml_path.string(), "missing key 'image'");
   m.meta.image = root["image"].as<std::string>();
+  // The image is read the trinary way (map_server's default); any other mode would be misread.
+  if (const YAML::Node mode = root["mode"];
+      mode && !(mode.IsScalar() && mode.Scalar() == "trinary"))
+    throw InputError(yaml_path.string(),
+                     "key 'mode': '" + (mode.IsScalar() ? mode.Scalar() : std::string("?")) +
+                         "' is not supported (only 'trinary'; 'scale' and 'raw' maps are not "
+                         "read)",
+                     static_cast<std::size_t>(mode.Mark().line + 1));
   m.meta.resolution_m = number_at(root, "resolution", yaml_path, std::nullopt);
   if (!(m.meta.resolution_m > 0.0) || !std::isfinite(m.meta.resolution_m))
     throw InputError(yaml_path.string(), "key 'resolution' must be a positive number");

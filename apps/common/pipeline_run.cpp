@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 
 #include "indoormap/core/atomic_file.hpp"
@@ -96,6 +97,9 @@ PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_
   run.load_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   run.inputs = loaded.inputs;
+  std::vector<std::string> input_warnings;
+  for (const auto& in : loaded.inputs)
+    input_warnings.insert(input_warnings.end(), in.warnings.begin(), in.warnings.end());
   if (!cfg.scanners.empty()) loaded.cloud.scanners = cfg.scanners;
   run.scanner_source = loaded.cloud.scanners.empty() ? "estimated"
                        : cfg.scanners.empty()        ? "file"
@@ -109,6 +113,28 @@ PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_
     std::string names;  // the data as a whole is unusable: name every input
     for (const auto& in : cli.inputs) names += (names.empty() ? "" : ", ") + in;
     throw InputError(names, e.problem(), e.line());
+  }
+  run.map.warnings.insert(run.map.warnings.begin(), input_warnings.begin(), input_warnings.end());
+  // A map without a single wall, furniture or free cell is not a result: the points are too few
+  // or too far apart for the cells (1e308 or kilometres apart gave an empty map with exit 0).
+  const auto& lc = run.map.layout;
+  if (lc.cells_wall + lc.cells_furniture + lc.cells_free == 0) {
+    std::string names;
+    for (const auto& in : cli.inputs) names += (names.empty() ? "" : ", ") + in;
+    std::uint64_t dropped = 0;
+    for (const auto& in : run.inputs) dropped += in.points_dropped;
+    char extent[160], cell[32];
+    const auto& g = run.map.geometry;
+    std::snprintf(extent, sizeof extent, "%.3g x %.3g m", g.width() * g.cell_m(),
+                  g.height() * g.cell_m());
+    std::snprintf(cell, sizeof cell, "%g", g.cell_m());
+    throw InputError(
+        names,
+        "no map: the layout has no wall, furniture or free cell (" + std::to_string(run.kept) +
+            " points kept over " + extent +
+            (dropped ? ", " + std::to_string(dropped) + " non-finite or beyond float range dropped"
+                     : std::string()) +
+            "): too few points, or too far apart for cells of " + cell + " m (check --unit)");
   }
   return run;
 }

@@ -29,6 +29,7 @@ void visit_plan(C& c, F&& f) {
   f("planner", "max_routes", c.planner.max_routes);
   f("planner", "extra_moves", c.planner.extra_moves);
   f("planner", "max_nodes", c.planner.max_nodes);
+  f("planner", "max_seconds", c.planner.max_seconds);
 }
 
 /// Reads a YAML file with only robot / safe_zone / planner sections over config. Unknown

@@ -1,7 +1,5 @@
 #include "explore_outputs.hpp"
 
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -149,27 +147,6 @@ std::vector<std::string> write_explore_files(const fs::path& dir,
                                 "explore-sim: " + info.map_name + " over the run");
   return {"map.pgm",      "map.yaml",    "path.geojson",
           "explore.json", "explore.png", "explore_strip.png"};
-}
-
-StagedOutputs::StagedOutputs(const fs::path& out)
-    : out_(out), staging_(out / (".explore-sim.staging-" + std::to_string(::getpid()))) {
-  std::error_code ec;
-  fs::remove_all(staging_, ec);
-  if (!fs::create_directories(staging_, ec) || ec)
-    throw OutputError(staging_.string(), "cannot create the staging directory");
-}
-
-StagedOutputs::~StagedOutputs() {
-  std::error_code ec;
-  fs::remove_all(staging_, ec);
-}
-
-void StagedOutputs::commit(const std::vector<std::string>& files) {
-  for (const auto& f : files) {
-    std::error_code ec;
-    fs::rename(staging_ / f, out_ / f, ec);
-    if (ec) throw OutputError((out_ / f).string(), ec.message());
-  }
 }
 
 }  // namespace indoormap::app

@@ -1,6 +1,5 @@
 #pragma once
-// explore-sim's output files, written into a staging directory and moved into the output
-// directory only when every one is complete (all or nothing).
+// explore-sim's output files (written into an app::OutputSet's staging directory: all or nothing).
 #include <Eigen/Core>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -33,21 +32,5 @@ nlohmann::ordered_json explore_json(const exploration::ExploreResult& r,
 std::vector<std::string> write_explore_files(const std::filesystem::path& dir,
                                              const exploration::ExploreResult& r,
                                              const ExploreRunInfo& info);
-
-/// A staging directory inside out: files are written there, then moved into out by commit();
-/// when commit() is not reached the staging directory is removed with whatever it holds.
-class StagedOutputs {
- public:
-  explicit StagedOutputs(const std::filesystem::path& out);
-  ~StagedOutputs();
-  StagedOutputs(const StagedOutputs&) = delete;
-  StagedOutputs& operator=(const StagedOutputs&) = delete;
-  const std::filesystem::path& dir() const { return staging_; }
-  /// Moves every named file from the staging directory into out. Throws OutputError.
-  void commit(const std::vector<std::string>& files);
-
- private:
-  std::filesystem::path out_, staging_;
-};
 
 }  // namespace indoormap::app

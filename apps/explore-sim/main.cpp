@@ -20,6 +20,7 @@
 #include "indoormap/formats/json.hpp"
 #include "indoormap/version.hpp"
 #include "map_yaml.hpp"
+#include "output_set.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
@@ -72,7 +73,8 @@ Args parse_args(int argc, char** argv) {
                   "Plain maps: grey levels >= this are free (default 250)")
       ->check(CLI::Range(0, 255));
   cli_app.add_option("--start", a.start_s, "Start X,Y[,DEG] in map metres (default: see below)");
-  cli_app.add_option("--seed", a.seed, "Seed of the laser noise (overrides run.seed)");
+  cli_app.add_option("--seed", a.seed, "Seed of the laser noise (overrides run.seed)")
+      ->check(CLI::NonNegativeNumber);  // "-1" would wrap to 2^32-1
   cli_app.add_option("-o,--out", a.out_dir, "Output directory (created if missing)");
   cli_app.add_option("-c,--config", a.config_file,
                      "YAML robot, laser and exploration parameters (config/explore-sim.yaml)");
@@ -176,7 +178,7 @@ int run(int argc, char** argv) {
   info.path_sample_every = cfg.explore.path_sample_every;
   info.strip_panels = cfg.strip_panels;
   t0 = std::chrono::steady_clock::now();
-  app::StagedOutputs staged(out);
+  app::OutputSet staged(out, "explore-sim");  // all or nothing: docs/explore-sim.md
   auto files = app::write_explore_files(staged.dir(), r, info);
   const double write_ms = ms_since(t0);
   const json summary = {
@@ -209,7 +211,7 @@ int run(int argc, char** argv) {
   };
   formats::write_json(staged.dir() / "summary.json", summary);
   files.push_back("summary.json");
-  staged.commit(files);
+  staged.commit();
   if (!a.quiet) {
     const auto d95 = r.distance_to_share(0.95);
     std::fprintf(stderr,

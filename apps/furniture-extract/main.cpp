@@ -8,6 +8,7 @@
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 #include "objects_outputs.hpp"
+#include "output_set.hpp"
 #include "pipeline_run.hpp"
 
 namespace fs = std::filesystem;
@@ -49,11 +50,13 @@ int run(int argc, char** argv) {
   app::add_border_objects(objs, border_result);
 
   const auto t_write = std::chrono::steady_clock::now();
-  std::vector<std::string> outputs = app::write_map_outputs(out, run);
+  app::OutputSet set(out, "furniture-extract");  // all or nothing: docs/furniture-extract.md
+  const fs::path& dir = set.dir();
+  std::vector<std::string> outputs = app::write_map_outputs(dir, run);
   app::ObjectOutputs what;
   what.input_points = &run.input_points;
   what.crop_margin_m = cfg.objects.crop_margin_m;
-  for (auto& f : app::write_object_outputs(out, m, objs, what)) outputs.push_back(f);
+  for (auto& f : app::write_object_outputs(dir, m, objs, what)) outputs.push_back(f);
 
   json summary = app::summary_json("furniture-extract", run, cfg);
   summary["objects"] = {{"count", objs.objects.size()},
@@ -62,7 +65,8 @@ int run(int argc, char** argv) {
   summary["border"] = {{"closed", border_result.closed}, {"reason", border_result.reason}};
   summary["timings_ms"]["objects"] = objects_ms;
   summary["timings_ms"]["border"] = border_ms;
-  app::finish_summary(summary, out, outputs, t_write, setup->start);
+  app::finish_summary(summary, dir, outputs, t_write, setup->start);
+  set.commit();
 
   app::report("furniture-extract", run, setup->cli.quiet);
   if (!setup->cli.quiet) std::cerr << "furniture-extract: " << objs.objects.size() << " objects\n";

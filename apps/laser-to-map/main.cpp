@@ -11,12 +11,14 @@
 
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
+#include "indoormap/core/input_file.hpp"
 #include "indoormap/formats/carmen_laser.hpp"
 #include "indoormap/formats/json.hpp"
 #include "indoormap/version.hpp"
 #include "laser_config.hpp"
 #include "laser_outputs.hpp"
 #include "main_guard.hpp"
+#include "output_set.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
@@ -151,7 +153,7 @@ int run(int argc, char** argv) {
   }
   if (a.log_path.empty()) throw UsageError("no log given: laser-to-map LOG -o DIR (see --help)");
   if (a.out_dir.empty()) throw UsageError("no output directory given: use -o DIR");
-  if (!fs::exists(a.log_path)) throw InputError(a.log_path, "no such file");
+  check_input_file(a.log_path, kNoSizeLimit);  // missing, a directory, a FIFO: exit 2
   const fs::path out = a.out_dir;
   ensure_writable_dir(out);
 
@@ -163,7 +165,8 @@ int run(int argc, char** argv) {
     return static_cast<int>(ExitCode::kNoResult);
   }
   const auto t_write = Clock::now();
-  auto files = app::write_laser_map_outputs(out, r);
+  app::OutputSet set(out, "laser-to-map");  // all or nothing: docs/laser-to-map.md, "Outputs"
+  auto files = app::write_laser_map_outputs(set.dir(), r);
   files.push_back("summary.json");
   const json summary = {
       {"program", "laser-to-map"},
@@ -178,7 +181,8 @@ int run(int argc, char** argv) {
         {"total", ms_since(t_start)}}},
       {"outputs", files},
   };
-  formats::write_json(out / "summary.json", summary);
+  formats::write_json(set.dir() / "summary.json", summary);
+  set.commit();
   if (!a.quiet) {
     const auto& c = r.check;
     char line[256];

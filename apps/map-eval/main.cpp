@@ -19,6 +19,7 @@
 #include "indoormap/version.hpp"
 #include "main_guard.hpp"
 #include "map_yaml.hpp"
+#include "output_set.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
@@ -228,7 +229,11 @@ int run(int argc, char** argv) {
     missing.push_back("room.geojson");
   }
   report["missing"] = missing;
-  write_file_atomic(fs::path(out_dir) / "eval.json", report.dump(2) + "\n");
+  {
+    app::OutputSet set(out_dir, "map-eval");  // all or nothing: docs/map-eval.md, "Outputs"
+    write_file_atomic(set.dir() / "eval.json", report.dump(2) + "\n");
+    set.commit();
+  }
   if (evaluated == 0) {
     std::fprintf(
         stderr,

@@ -9,6 +9,7 @@
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 #include "objects_outputs.hpp"
+#include "output_set.hpp"
 #include "pipeline_run.hpp"
 #include "route_outputs.hpp"
 
@@ -49,13 +50,15 @@ int run(int argc, char** argv) {
   app::add_border_objects(objs, border_result);
 
   const auto t_write = std::chrono::steady_clock::now();
-  std::vector<std::string> outputs = app::write_map_outputs(out, run);
+  app::OutputSet set(out, "pcd-to-map");  // all or nothing: docs/pcd-to-map.md, "Outputs"
+  const fs::path& dir = set.dir();
+  std::vector<std::string> outputs = app::write_map_outputs(dir, run);
   app::ObjectOutputs what;
   what.csv = what.picture = false;
-  for (auto& f : app::write_object_outputs(out, m, objs, what)) outputs.push_back(f);
-  json border_block = app::write_border_outputs(out, m, border_result, border_ms);
+  for (auto& f : app::write_object_outputs(dir, m, objs, what)) outputs.push_back(f);
+  json border_block = app::write_border_outputs(dir, m, border_result, border_ms);
   for (const auto& f : border_block["outputs"]) outputs.push_back(f.get<std::string>());
-  const auto route = app::write_route_outputs(out, setup->cli, cfg, m.layout.layout,
+  const auto route = app::write_route_outputs(dir, setup->cli, cfg, m.layout.layout,
                                               m.geometry);  // --start/--goal
   if (route)
     for (const auto& f : route->summary.value("outputs", json::array()))
@@ -68,7 +71,8 @@ int run(int argc, char** argv) {
                         {"from_border", objs.objects.size() - furniture_count},
                         {"file", "objects.json"}};
   summary["timings_ms"]["objects"] = objects_ms;
-  app::finish_summary(summary, out, outputs, t_write, setup->start);
+  app::finish_summary(summary, dir, outputs, t_write, setup->start);
+  set.commit();
 
   app::report("pcd-to-map", run, setup->cli.quiet);
   std::cout << "outputs written to " << out.string() << "\n";

@@ -1,6 +1,7 @@
 // plan-route: a route of "turn, then go straight" commands on any ROS map (or plain map image),
 // through the safe zone of a robot of the configured size. Usage and outputs: docs/plan-route.md.
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -11,6 +12,7 @@
 #include "indoormap/formats/json.hpp"
 #include "indoormap/version.hpp"
 #include "map_yaml.hpp"
+#include "output_set.hpp"
 #include "plan_config.hpp"
 #include "route_files.hpp"
 
@@ -30,6 +32,7 @@ struct Args {
   double resolution = 0.0;
   int free_min = 250;
   bool print_config = false;
+  bool quiet = false;
   std::optional<int> exit_code;
 };
 
@@ -66,6 +69,7 @@ Args parse_args(int argc, char** argv) {
                      "YAML robot and planner parameters (config/plan-route.yaml)");
   cli_app.add_flag("--print-config", a.print_config,
                    "Print the effective parameters as YAML and exit");
+  cli_app.add_flag("-q,--quiet", a.quiet, "No progress or run report on stderr (errors stay)");
   try {
     cli_app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -105,6 +109,16 @@ int run(int argc, char** argv) {
   t0 = std::chrono::steady_clock::now();
   const auto safe = planning::safe_zone(map.cells, templates.disk, cfg.safe_zone);
   const double safe_ms = ms_since(t0);
+  if (!a.quiet) {
+    std::fprintf(
+        stderr, "plan-route: %s: %d x %d cells of %.3f m; searching (budget %lld nodes, %g s)\n",
+        a.map_path.c_str(), map.geometry.width(), map.geometry.height(), map.geometry.cell_m(),
+        static_cast<long long>(cfg.planner.max_nodes), cfg.planner.max_seconds);
+    cfg.planner.progress = [](const char* search, std::int64_t nodes, double s) {
+      std::fprintf(stderr, "plan-route: %s search: %lld nodes expanded, %.0f s\n", search,
+                   static_cast<long long>(nodes), s);
+    };
+  }
   t0 = std::chrono::steady_clock::now();
   const planning::PlanResult result =
       planning::plan_routes(safe, map.geometry, start, goal, templates, cfg.planner);
@@ -112,7 +126,8 @@ int run(int argc, char** argv) {
 
   t0 = std::chrono::steady_clock::now();
   formats::RouteReport rep{&safe, map.geometry, start, goal, cfg.robot, cfg.planner, &result};
-  auto files = app::write_route_files(out, rep);
+  app::OutputSet set(out, "plan-route");  // all or nothing: docs/plan-route.md, "Outputs"
+  auto files = app::write_route_files(set.dir(), rep);
   const double write_ms = ms_since(t0);
   files.push_back("summary.json");
   json summary = {
@@ -127,6 +142,8 @@ int run(int argc, char** argv) {
       {"found", !result.routes.empty()},
       {"message", result.message},
       {"routes", result.routes.size()},
+      {"budget_reached",
+       result.budget_reached.empty() ? json(nullptr) : json(result.budget_reached)},
       {"best", result.routes.empty() ? json(nullptr)
                                      : json{{"moves", result.routes[0].moves},
                                             {"turns", result.routes[0].turns},
@@ -142,12 +159,14 @@ int run(int argc, char** argv) {
         {"total", ms_since(t_start)}}},
       {"outputs", files},
   };
-  formats::write_json(out / "summary.json", summary);
+  formats::write_json(set.dir() / "summary.json", summary);
+  set.commit();
   if (result.routes.empty()) {
     std::cerr << "plan-route: " << result.message << "\n";
     return static_cast<int>(ExitCode::kNoResult);
   }
   const auto& b = result.routes.front();
+  if (a.quiet) return 0;
   std::cerr << "plan-route: " << result.routes.size() << " route(s); best: " << b.moves
             << " moves, " << b.turns << " turns, " << b.length_m << " m\n";
   std::cout << "outputs written to " << out.string() << "\n";

@@ -17,6 +17,7 @@
 #include "indoormap/sim/simulate.hpp"
 #include "indoormap/version.hpp"
 #include "main_guard.hpp"
+#include "output_set.hpp"
 #include "scene_outputs.hpp"
 #include "scene_yaml.hpp"
 
@@ -54,7 +55,8 @@ Args parse_args(int argc, char** argv) {
   app.add_flag("--random", a.random, "Generate a plausible random scene instead of reading one");
   auto* seed_opt = app.add_option("--seed", a.seed,
                                   "Seed of the random scene and of the noise (default 1; for a "
-                                  "scene file it overrides the file's seed)");
+                                  "scene file it overrides the file's seed)")
+                       ->check(CLI::NonNegativeNumber);  // "-1" would wrap to 2^64-1
   app.add_option("--rooms", a.rooms, "Random scene: number of furnished rooms (default 1)")
       ->check(CLI::Range(1, 200));
   app.add_option("-o,--out", a.out_dir, "Output directory (created if needed)");
@@ -193,14 +195,16 @@ int run(int argc, char** argv) {
     return static_cast<int>(ExitCode::kNoResult);
   }
   sim::OutputOptions out_options = config.output;
-  const auto written = scene_sim::write_scene_outputs(a.out_dir, scene, result, out_options);
+  app::OutputSet set(a.out_dir, "scene-sim");  // all or nothing: docs/scene-sim.md, "Outputs"
+  const auto written = scene_sim::write_scene_outputs(set.dir(), scene, result, out_options);
   const auto t2 = std::chrono::steady_clock::now();
 
   const double sim_s = std::chrono::duration<double>(t1 - t0).count();
   const double write_s = std::chrono::duration<double>(t2 - t1).count();
   const nlohmann::ordered_json summary =
       summary_json(a, config, scene, result, written.files, sim_s, write_s);
-  write_file_atomic(fs::path(a.out_dir) / "summary.json", summary.dump(2) + "\n");
+  write_file_atomic(set.dir() / "summary.json", summary.dump(2) + "\n");
+  set.commit();
   if (!a.quiet)
     std::fprintf(stderr, "scene-sim: %zu points (%.1f M points/s), outputs in %s\n",
                  result.points.size(), sim_s > 0 ? result.points.size() / sim_s / 1e6 : 0.0,

@@ -212,7 +212,7 @@ void apply_config_file(const std::string& file, Config& config) {
 }
 
 ParsedScene parse_scene_file(const std::string& file, const sim::ScannerParams& base_scanner) {
-  const YAML::Node root = app::load_yaml_file(file);
+  const YAML::Node root = app::load_yaml_file(file, "the scene file");
   ParsedScene parsed;
   Reader rd(file, &parsed.key_lines);
   sim::Scene& scene = parsed.scene;

@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "indoormap/core/errors.hpp"
+#include "indoormap/core/input_file.hpp"
 #include "load_internal.hpp"
 
 namespace indoormap::cloud_io {
@@ -34,14 +35,7 @@ void reserve_more(std::vector<Eigen::Vector3f>& out, std::uint64_t n) {
 }
 
 std::uint64_t checked_file_size(const std::string& file) {
-  std::error_code ec;
-  const auto status = fs::status(file, ec);
-  if (ec || !fs::exists(status)) throw InputError(file, "no such file");
-  if (fs::is_directory(status)) throw InputError(file, "is a directory, expected a file");
-  if (!fs::is_regular_file(status)) throw InputError(file, "not a regular file");
-  const auto size = fs::file_size(file, ec);
-  if (ec) throw InputError(file, "cannot read the file size: " + ec.message());
-  return size;
+  return check_input_file(file, kNoSizeLimit);
 }
 
 namespace {
@@ -142,6 +136,7 @@ void load_one(const std::string& path, const LoadOptions& options, LoadResult& r
   report.points_read = info.points;
   report.points_dropped = info.points - (kept - first);
   report.scans = info.scans;
+  report.warnings = info.warnings;
   report.scanner_known = !info.scanners.empty();
   if (kept == first) {
     if (info.points == 0) throw InputError(path, "empty cloud: no points");

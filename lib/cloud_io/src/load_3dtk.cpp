@@ -147,6 +147,10 @@ void read_scan(const Scan& scan, Budget budget, const LoadOptions& options,
     m = read_frames(frames.string());
   else if (fs::exists(pose, ec))
     m = read_pose(pose.string());
+  else
+    info.warnings.push_back(file + ": no " + pose.filename().string() + " or " +
+                            frames.filename().string() +
+                            " beside it: read with the identity pose (scanner at the origin)");
 
   budget.used += info.points;
   const std::array<double, 16> id = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};

@@ -29,8 +29,9 @@ struct ReadInfo {
   std::uint64_t points = 0;  ///< points appended to out, including non-finite ones
   /// Scanner positions, in the same frame as the appended points.
   std::vector<Eigen::Vector3d> scanners;
-  int scans = 0;              ///< 3DTK: scan files read
-  bool output_frame = false;  ///< true: points and scanners are already metres, z up
+  int scans = 0;                      ///< 3DTK: scan files read
+  bool output_frame = false;          ///< true: points and scanners are already metres, z up
+  std::vector<std::string> warnings;  ///< InputReport::warnings
 };
 
 /// Makes room for `n` more points, growing geometrically so that merging many files stays

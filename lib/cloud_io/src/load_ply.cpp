@@ -273,6 +273,21 @@ class TokenReader {
     return v;
   }
   std::size_t line() const { return line_; }
+  /// True when only spaces, tabs or a CR are left on the current line (or the file ends).
+  bool at_end_of_line() {
+    for (;;) {
+      while (pos_ < buf_.size() && (buf_[pos_] == ' ' || buf_[pos_] == '\t' || buf_[pos_] == '\r'))
+        ++pos_;
+      if (pos_ < buf_.size()) return buf_[pos_] == '\n';
+      if (eof_) return true;
+      buf_.clear();
+      pos_ = 0;
+      buf_.resize(chunk_);
+      const std::size_t got = std::fread(buf_.data(), 1, chunk_, f_);
+      buf_.resize(got);
+      eof_ = got < chunk_;
+    }
+  }
 
  private:
   std::FILE* f_;
@@ -287,6 +302,60 @@ class TokenReader {
 struct FileCloser {
   void operator()(std::FILE* f) const { std::fclose(f); }
 };
+
+// The ascii body up to and including the vertex element, one element per line: a line with a
+// value too many or too few is refused at that line (it would shift every later value).
+void read_ascii_elements(TokenReader& tr, const Header& h, std::vector<Element>::const_iterator vit,
+                         const int (&xyz_index)[3], const std::string& file,
+                         std::vector<Eigen::Vector3f>& out) {
+  double v[3] = {0.0, 0.0, 0.0};
+  for (auto it = h.elements.begin(); it <= vit; ++it) {
+    if (it->props.empty()) continue;  // nothing to read, whatever its count (up to 2^64 - 1)
+    const bool is_vertex = it == vit;
+    for (std::uint64_t k = 0; k < it->count; ++k) {
+      // One element per line: a short or long line would shift every later value silently.
+      std::size_t line = 0;
+      auto same_line = [&] {
+        if (line == 0) line = tr.line();
+        if (tr.line() != line)
+          throw InputError(file,
+                           "PLY data line has fewer values than the " +
+                               std::to_string(it->props.size()) + " properties of '" + it->name +
+                               "' (short line)",
+                           line);
+      };
+      for (std::size_t pi = 0; pi < it->props.size(); ++pi) {
+        const Property& p = it->props[pi];
+        if (p.is_list) {
+          const double c = tr.number();
+          same_line();
+          if (!(c >= 0) || c > 1e6 || c != std::floor(c))
+            throw InputError(file, "PLY list count is not a small non-negative integer", tr.line());
+          for (auto j = static_cast<std::uint64_t>(c); j > 0; --j) {
+            tr.next();
+            same_line();
+          }
+        } else if (is_vertex) {
+          const double x = tr.number();
+          same_line();
+          for (int a = 0; a < 3; ++a)
+            if (xyz_index[a] == static_cast<int>(pi)) v[a] = x;
+        } else {
+          tr.next();
+          same_line();
+        }
+      }
+      if (!tr.at_end_of_line())
+        throw InputError(file,
+                         "PLY data line has more values than the " +
+                             std::to_string(it->props.size()) + " properties of '" + it->name + "'",
+                         tr.line());
+      if (is_vertex)
+        out.emplace_back(static_cast<float>(v[0]), static_cast<float>(v[1]),
+                         static_cast<float>(v[2]));
+    }
+  }
+}
 
 }  // namespace
 
@@ -342,31 +411,7 @@ ReadInfo read_ply(const std::string& file, const Budget& budget,
   double v[3] = {0.0, 0.0, 0.0};
   if (h.format == Format::kAscii) {
     TokenReader tr(f.get(), file, h.lines + 1, body);
-    for (auto it = h.elements.begin(); it <= vit; ++it) {
-      if (it->props.empty()) continue;  // nothing to read, whatever its count (up to 2^64 - 1)
-      const bool is_vertex = it == vit;
-      for (std::uint64_t k = 0; k < it->count; ++k) {
-        for (std::size_t pi = 0; pi < it->props.size(); ++pi) {
-          const Property& p = it->props[pi];
-          if (p.is_list) {
-            const double c = tr.number();
-            if (!(c >= 0) || c > 1e6 || c != std::floor(c))
-              throw InputError(file, "PLY list count is not a small non-negative integer",
-                               tr.line());
-            for (auto j = static_cast<std::uint64_t>(c); j > 0; --j) tr.next();
-          } else if (is_vertex) {
-            const double x = tr.number();
-            for (int a = 0; a < 3; ++a)
-              if (xyz_index[a] == static_cast<int>(pi)) v[a] = x;
-          } else {
-            tr.next();
-          }
-        }
-        if (is_vertex)
-          out.emplace_back(static_cast<float>(v[0]), static_cast<float>(v[1]),
-                           static_cast<float>(v[2]));
-      }
-    }
+    read_ascii_elements(tr, h, vit, xyz_index, file, out);
   } else {
     const bool swap = h.format == Format::kBig;
     ByteReader br(f.get(), file, body);

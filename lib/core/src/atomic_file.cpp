@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <system_error>
@@ -18,8 +19,8 @@ namespace {
 
 fs::path temp_name_for(const fs::path& path) {
   static std::atomic<unsigned> counter{0};
-  return path.parent_path() / ("." + path.filename().string() + ".tmp." + std::to_string(::getpid()) +
-                               "." + std::to_string(counter++));
+  return path.parent_path() / ("." + path.filename().string() + ".tmp." +
+                               std::to_string(::getpid()) + "." + std::to_string(counter++));
 }
 
 }  // namespace
@@ -33,6 +34,11 @@ void write_stream_atomic(const fs::path& path, const std::function<void(std::ost
       write(out);
       out.flush();
       if (!out) throw OutputError(path.string(), "write failed (disk full?)");
+      // Test hook (documented in atomic_file.hpp): a full disk on the named file.
+      if (const char* fail = std::getenv("INDOORMAP_TEST_FAIL_WRITE");
+          fail && *fail && path.filename() == fail)
+        throw OutputError(path.string(),
+                          "write failed: No space left on device (INDOORMAP_TEST_FAIL_WRITE)");
     }
     std::error_code ec;
     fs::rename(tmp, path, ec);
@@ -59,7 +65,9 @@ void ensure_writable_dir(const fs::path& dir) {
   const fs::path probe = temp_name_for(dir / "probe");
   {
     std::ofstream out(probe, std::ios::binary);
-    if (!out) throw OutputError(dir.string(), std::string("directory is not writable: ") + std::strerror(errno));
+    if (!out)
+      throw OutputError(dir.string(),
+                        std::string("directory is not writable: ") + std::strerror(errno));
   }
   fs::remove(probe, ec);
 }

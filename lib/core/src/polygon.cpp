@@ -188,6 +188,64 @@ double boundary_hausdorff(const Polygon& a, const Polygon& b, double step_m) {
                   directed_hausdorff(sample_boundary(b, step_m), a));
 }
 
+namespace {
+
+// The cells [c0, c1) of one raster row whose centres contains(poly, centre) accepts, as sorted
+// disjoint intervals: the crossings of the row with the edges are computed with contains()'s own
+// expression, and a centre is inside when an odd number of crossings lie at or left of it. So the
+// counts equal those of testing every cell centre with contains() (the loop this replaces), at
+// O(edges log edges) per row instead of O(cells x edges).
+struct RowRaster {
+  double x0, cell;
+  int width;
+  double centre_x(int c) const { return x0 + (c + 0.5) * cell; }
+  // Smallest c in [0, width] with centre_x(c) >= x (width if none).
+  int first_at_or_right_of(double x) const {
+    double g = std::ceil((x - x0) / cell - 0.5);
+    int c = !(g > 0) ? 0 : g > width ? width : static_cast<int>(g);
+    while (c > 0 && centre_x(c - 1) >= x) --c;
+    while (c < width && centre_x(c) < x) ++c;
+    return c;
+  }
+  void intervals(const Polygon& p, double y, std::vector<double>& xs,
+                 std::vector<std::pair<int, int>>& out) const {
+    xs.clear();
+    out.clear();
+    for (std::size_t i = 0, n = p.size(), j = n - 1; i < n; j = i++) {
+      const auto& a = p[i];
+      const auto& b = p[j];
+      if ((a.y() > y) != (b.y() > y))
+        xs.push_back((b.x() - a.x()) * (y - a.y()) / (b.y() - a.y()) + a.x());
+    }
+    std::sort(xs.begin(), xs.end());
+    for (std::size_t k = 0; k + 1 < xs.size(); k += 2) {
+      const int c0 = first_at_or_right_of(xs[k]), c1 = first_at_or_right_of(xs[k + 1]);
+      if (c1 > c0) out.emplace_back(c0, c1);
+    }
+  }
+};
+
+std::int64_t cells_in(const std::vector<std::pair<int, int>>& v) {
+  std::int64_t n = 0;
+  for (const auto& [c0, c1] : v) n += c1 - c0;
+  return n;
+}
+
+std::int64_t cells_in_both(const std::vector<std::pair<int, int>>& a,
+                           const std::vector<std::pair<int, int>>& b) {
+  std::int64_t n = 0;
+  for (std::size_t i = 0, j = 0; i < a.size() && j < b.size();) {
+    n += std::max(0, std::min(a[i].second, b[j].second) - std::max(a[i].first, b[j].first));
+    if (a[i].second < b[j].second)
+      ++i;
+    else
+      ++j;
+  }
+  return n;
+}
+
+}  // namespace
+
 double polygon_iou(const Polygon& a, const Polygon& b, double cell_m) {
   const auto [alo, ahi] = bounds(a);
   const auto [blo, bhi] = bounds(b);
@@ -199,14 +257,17 @@ double polygon_iou(const Polygon& a, const Polygon& b, double cell_m) {
   const double cell = std::max(cell_m, std::sqrt(area / 4e6));
   const int w = static_cast<int>(std::ceil((hi.x() - lo.x()) / cell));
   const int h = static_cast<int>(std::ceil((hi.y() - lo.y()) / cell));
+  const RowRaster row{lo.x(), cell, w};
+  std::vector<double> xs;
+  std::vector<std::pair<int, int>> ia, ib;
   std::int64_t inter = 0, uni = 0;
   for (int r = 0; r < h; ++r) {
-    for (int c = 0; c < w; ++c) {
-      const Eigen::Vector2d p(lo.x() + (c + 0.5) * cell, lo.y() + (r + 0.5) * cell);
-      const bool ia = contains(a, p), ib = contains(b, p);
-      inter += ia && ib;
-      uni += ia || ib;
-    }
+    const double y = lo.y() + (r + 0.5) * cell;
+    row.intervals(a, y, xs, ia);
+    row.intervals(b, y, xs, ib);
+    const std::int64_t both = cells_in_both(ia, ib);
+    inter += both;
+    uni += cells_in(ia) + cells_in(ib) - both;
   }
   return uni > 0 ? static_cast<double>(inter) / static_cast<double>(uni) : 0.0;
 }

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "indoormap/core/errors.hpp"
+#include "indoormap/core/input_file.hpp"
 
 namespace indoormap::formats {
 
@@ -58,6 +59,7 @@ CarmenReader::CarmenReader(const std::string& path, CarmenReadOptions options)
     : path_(path), options_(options), file_(std::make_unique<File>()) {
   options_.validate();
   max_range_m_ = options_.default_max_range_m;
+  check_input_file(path, kNoSizeLimit, "a CARMEN log");  // a FIFO would block gzopen
   file_->gz = gzopen(path.c_str(), "rb");
   if (!file_->gz) throw InputError(path, std::string("cannot open: ") + std::strerror(errno));
   buffer_.resize(options_.max_line_bytes + kChunk);

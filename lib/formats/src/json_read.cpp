@@ -3,17 +3,18 @@
 #include <cmath>
 #include <fstream>
 
+#include "indoormap/core/input_file.hpp"
+
 namespace indoormap::formats::detail {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
 json parse_json_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), "cannot open");
+  const std::string bytes = read_input_file(path, kMaxTextInputBytes, "a JSON file");
   json j;
   try {
-    j = json::parse(in);
+    j = json::parse(bytes);
   } catch (const json::exception& e) {  // parse errors, and out_of_range for numbers like 1e999
     throw InputError(path.string(), std::string("invalid JSON: ") + e.what());
   }

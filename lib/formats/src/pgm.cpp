@@ -8,6 +8,7 @@
 
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
+#include "indoormap/core/input_file.hpp"
 
 namespace indoormap::formats {
 
@@ -35,11 +36,7 @@ void write_layout_pgm(const fs::path& path, const Grid<Cell>& layout) {
 
 Grid<std::uint8_t> read_pgm(const fs::path& path, bool flip) {
   // A directory would read as an empty file, a FIFO would block in open().
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path.string(), "cannot open: no such file");
-  if (!fs::is_regular_file(path, ec)) throw InputError(path.string(), "not a regular file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), "cannot open");
+  std::ifstream in = open_input_file(path, kNoSizeLimit, "a PGM file");
   // The magic number is two bytes followed by whitespace or a comment (not read as a
   // whitespace-delimited token: that could be as long as the file).
   char magic[2] = {};
@@ -67,6 +64,7 @@ Grid<std::uint8_t> read_pgm(const fs::path& path, bool flip) {
   in.get();  // the single whitespace after maxval
   // The pixels must be in the file before the grid is allocated for them.
   const auto data_start = static_cast<long long>(in.tellg());
+  std::error_code ec;
   const auto file_size = static_cast<long long>(fs::file_size(path, ec));
   const long long present = !in || ec || data_start < 0 ? 0 : std::max(0LL, file_size - data_start);
   if (present < w * h)

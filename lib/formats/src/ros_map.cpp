@@ -9,6 +9,7 @@
 
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
+#include "indoormap/core/input_file.hpp"
 #include "indoormap/formats/pgm.hpp"
 
 namespace indoormap::formats {
@@ -167,9 +168,13 @@ RosMap decode_ros_map(const RosMapMeta& meta, const fs::path& yaml_path, std::in
   fs::path image = m.meta.image;
   if (image.is_relative()) image = yaml_path.parent_path() / image;
   std::error_code ec;
-  if (!fs::is_regular_file(image, ec))
-    throw InputError(image.string(),
-                     "map image not found (named by 'image' in " + yaml_path.string() + ")");
+  if (!fs::is_regular_file(image, ec)) {
+    if (!fs::exists(image, ec))
+      throw InputError(image.string(),
+                       "map image not found (named by 'image' in " + yaml_path.string() + ")");
+    check_input_file(image, kNoSizeLimit,
+                     "the map image named by 'image' in " + yaml_path.string());
+  }
   const cv::Mat img = decode_gray(image, max_cells);
   const int w = img.cols, h = img.rows;
 
@@ -197,6 +202,7 @@ RosMap read_plain_map(const fs::path& image, double resolution_m, int free_min,
   if (!fs::exists(image, ec)) throw InputError(image.string(), "map image not found");
   if (!fs::is_regular_file(image, ec))
     throw InputError(image.string(), "map image is not a regular file");
+  check_input_file(image, kNoSizeLimit, "a map image");
   const cv::Mat img = decode_gray(image, max_cells);
   const int w = img.cols, h = img.rows;
   RosMap m;

@@ -71,7 +71,8 @@ std::vector<std::vector<CellIndex>> paper_search(const Grid<SafeCell>& safe,
                                                  const Grid<std::int32_t>& wave,
                                                  const Grid<std::uint8_t>& region, CellIndex start,
                                                  CellIndex goal, const NeighbourhoodTemplate& t,
-                                                 const PlannerParams& p, std::int64_t& expanded) {
+                                                 const PlannerParams& p, std::int64_t& expanded,
+                                                 SearchBudget& budget) {
   const int w = safe.width, h = safe.height;
   const auto id_of = offset_index(t);
   const Grid<std::uint8_t> virgin = virgin_counts(region);
@@ -98,7 +99,7 @@ std::vector<std::vector<CellIndex>> paper_search(const Grid<SafeCell>& safe,
     // Paths "significantly" longer than the best found are not explored further.
     if (best_end != std::numeric_limits<int>::max() && node.moves + 1 > best_end + p.extra_moves)
       continue;
-    if (++expanded > p.max_nodes) break;
+    if (!budget.spend("paper", expanded)) break;
     ++gen;
     const auto& wv = wave.data;
     const auto& rg = region.data;

@@ -41,6 +41,17 @@ void require(bool ok, const std::string& what) {
   if (!ok) throw UsageError("invalid parameter " + what);
 }
 
+// Which budget stopped the search, its value and what was done, and the keys to raise.
+std::string budget_message(const PlannerParams& p, const PlanResult& r) {
+  const std::string what = r.budget_reached == "planner.max_seconds"
+                               ? "planner.max_seconds " + fmt(p.max_seconds) + " s"
+                               : "planner.max_nodes " + std::to_string(p.max_nodes) + " nodes";
+  return what + " reached (" + std::to_string(r.paper_nodes) + " paper + " +
+         std::to_string(r.exact_nodes) +
+         " exact nodes expanded); raise planner.max_seconds / planner.max_nodes, or plan to a "
+         "nearer goal";
+}
+
 }  // namespace
 
 void validate(const PlannerParams& p) {
@@ -52,6 +63,8 @@ void validate(const PlannerParams& p) {
   require(p.max_routes >= 1 && p.max_routes <= 1000, "planner.max_routes: must be in [1, 1000]");
   require(p.extra_moves >= 0 && p.extra_moves <= 10, "planner.extra_moves: must be in [0, 10]");
   require(p.max_nodes >= 1, "planner.max_nodes: must be >= 1");
+  require(p.max_seconds > 0 && p.max_seconds <= 86400,
+          "planner.max_seconds: must be in (0, 86400] s");
 }
 
 void validate(const RobotParams& robot, const PlannerParams& params) {
@@ -126,6 +139,13 @@ Grid<std::uint8_t> trajectory_region(const Grid<std::int32_t>& wave, CellIndex s
 
 ExactResult exact_min_moves(const Grid<SafeCell>& safe, CellIndex start, CellIndex goal,
                             const NeighbourhoodTemplate& t, const PlannerParams& p, int bound) {
+  detail::SearchBudget budget(p);
+  return detail::exact_search(safe, start, goal, t, p, bound, budget);
+}
+
+ExactResult detail::exact_search(const Grid<SafeCell>& safe, CellIndex start, CellIndex goal,
+                                 const NeighbourhoodTemplate& t, const PlannerParams& p, int bound,
+                                 SearchBudget& budget) {
   ExactResult res;
   const int w = safe.width, h = safe.height;
   if (!safe.contains(start.col, start.row) || !safe.contains(goal.col, goal.row) ||
@@ -172,7 +192,7 @@ ExactResult exact_min_moves(const Grid<SafeCell>& safe, CellIndex start, CellInd
     if (closed[ci]) continue;
     closed[ci] = 1;
     if (it.cell == gi) break;
-    if (++res.nodes > p.max_nodes) {
+    if (!budget.spend("exact", res.nodes)) {
       res.complete = false;
       return res;
     }
@@ -287,6 +307,7 @@ PlanResult plan_routes(const Grid<SafeCell>& safe, const GridGeometry& geometry,
   PlanResult res;
   res.start_cell = checked_cell(safe, geometry, start, "start");
   res.goal_cell = checked_cell(safe, geometry, goal, "goal");
+  detail::SearchBudget budget(params);  // max_seconds counts from here: wave, region, searches
   res.wave = lee_wave(safe, res.start_cell, res.goal_cell);
   if (res.wave.at(res.goal_cell) < 0) {
     res.region = Grid<std::uint8_t>(safe.width, safe.height, 0);
@@ -298,7 +319,7 @@ PlanResult plan_routes(const Grid<SafeCell>& safe, const GridGeometry& geometry,
   std::vector<std::pair<std::vector<CellIndex>, std::string>> found;
   if (params.paper_rules) {
     auto routes = paper_search(safe, res.wave, res.region, res.start_cell, res.goal_cell, t, params,
-                               res.paper_nodes);
+                               res.paper_nodes, budget);
     for (auto& r : routes) {
       const int m = static_cast<int>(r.size()) - 1;
       if (res.paper_best_moves < 0 || m < res.paper_best_moves) res.paper_best_moves = m;
@@ -311,7 +332,8 @@ PlanResult plan_routes(const Grid<SafeCell>& safe, const GridGeometry& geometry,
     // The paper's best route bounds the search: it only has to look for fewer moves.
     const int bound =
         res.paper_best_moves >= 0 ? res.paper_best_moves : std::numeric_limits<int>::max();
-    ExactResult ex = exact_min_moves(safe, res.start_cell, res.goal_cell, t, params, bound);
+    ExactResult ex =
+        detail::exact_search(safe, res.start_cell, res.goal_cell, t, params, bound, budget);
     res.exact_complete = ex.complete;
     res.exact_nodes = ex.nodes;
     if (ex.cells) {
@@ -335,10 +357,12 @@ PlanResult plan_routes(const Grid<SafeCell>& safe, const GridGeometry& geometry,
   });
   if (static_cast<int>(res.routes.size()) > params.max_routes)
     res.routes.resize(static_cast<std::size_t>(params.max_routes));
+  res.budget_reached = budget.reached();
   if (res.routes.empty()) {
     res.message =
-        params.exact_search && !res.exact_complete
-            ? "no route found within planner.max_nodes expanded nodes"
+        (params.exact_search && !res.exact_complete) ||
+                (!params.exact_search && !res.budget_reached.empty())
+            ? "no route found within the work budget: " + budget_message(params, res)
             : "no route: the goal is connected to the start, but not by straight moves of " +
                   fmt(params.d_min_m) + " to " + fmt(params.d_max_m) + " m through the safe zone";
   } else if (params.paper_rules && params.exact_search && res.exact_best_moves >= 0 &&

@@ -1,8 +1,10 @@
 #pragma once
 // Internal to im_planning: what planner.cpp and paper_search.cpp share.
 #include <array>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "indoormap/planning/planner.hpp"
@@ -16,6 +18,42 @@ inline std::size_t idx(int width, CellIndex c) {
   return static_cast<std::size_t>(c.row) * static_cast<std::size_t>(width) +
          static_cast<std::size_t>(c.col);
 }
+
+/// The work budget shared by the searches of one plan_routes call: nodes per search
+/// (max_nodes) and seconds over all of them (max_seconds), with progress about once a second.
+class SearchBudget {
+ public:
+  explicit SearchBudget(const PlannerParams& p) : p_(p), start_(std::chrono::steady_clock::now()) {}
+  /// Counts one expanded node of `search`; false (and reached() set) when over the budget. The
+  /// clock is read every 16 nodes only (one node can take milliseconds on a large template).
+  bool spend(const char* search, std::int64_t& nodes) {
+    if (++nodes > p_.max_nodes) {
+      reached_ = "planner.max_nodes";
+      return false;
+    }
+    if ((nodes & 15) != 0) return true;
+    const double s = seconds();
+    if (s > p_.max_seconds) {
+      reached_ = "planner.max_seconds";
+      return false;
+    }
+    if (p_.progress && s >= next_report_s_) {
+      p_.progress(search, nodes, s);
+      next_report_s_ = s + 1.0;
+    }
+    return true;
+  }
+  double seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+  const std::string& reached() const { return reached_; }
+
+ private:
+  const PlannerParams& p_;
+  std::chrono::steady_clock::time_point start_;
+  double next_report_s_ = 1.0;
+  std::string reached_;
+};
 
 /// Visits every end point of the template visible from `from`: its whole supercover line lies on
 /// cells where passable(flat index) holds. One linear pass over the prefix tree; a blocked cell
@@ -44,6 +82,12 @@ std::vector<std::vector<CellIndex>> paper_search(const Grid<SafeCell>& safe,
                                                  const Grid<std::int32_t>& wave,
                                                  const Grid<std::uint8_t>& region, CellIndex start,
                                                  CellIndex goal, const NeighbourhoodTemplate& t,
-                                                 const PlannerParams& p, std::int64_t& expanded);
+                                                 const PlannerParams& p, std::int64_t& expanded,
+                                                 SearchBudget& budget);
+
+/// exact_min_moves within a shared budget (plan_routes runs both searches within one).
+ExactResult exact_search(const Grid<SafeCell>& safe, CellIndex start, CellIndex goal,
+                         const NeighbourhoodTemplate& t, const PlannerParams& p, int bound,
+                         SearchBudget& budget);
 
 }  // namespace indoormap::planning::detail

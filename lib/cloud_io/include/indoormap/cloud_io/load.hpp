@@ -48,6 +48,9 @@ struct InputReport {
   int scans = 0;                     ///< 3DTK: number of scan files read
   /// A scanner position came from the input (PCD VIEWPOINT line, 3DTK .frames / .pose).
   bool scanner_known = false;
+  /// Doubts about the input that did not stop the load (e.g. a 3DTK scan without its pose file,
+  /// read with the identity pose), each naming its file. The apps print them as warnings.
+  std::vector<std::string> warnings;
 };
 
 struct LoadResult {

@@ -15,6 +15,9 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view bytes
 
 /// Calls write(stream) on a temporary file, then renames it to path. If write throws, the
 /// temporary file is removed and the exception propagates.
+/// Test hook: when the environment variable INDOORMAP_TEST_FAIL_WRITE equals path's file name
+/// (e.g. "summary.json"), the write fails as on a full disk (OutputError, temporary removed).
+/// Only the tests set it (the output-set tests: a failure part-way leaves OUTDIR untouched).
 void write_stream_atomic(const std::filesystem::path& path,
                          const std::function<void(std::ostream&)>& write);
 

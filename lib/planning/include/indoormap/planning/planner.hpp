@@ -8,6 +8,7 @@
 // its length is at most D_max and, unless it is the route's last move, at least D_min.
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
@@ -32,6 +33,13 @@ struct PlannerParams {
   /// moves more than the best route are still explored (alternatives).
   int extra_moves = 1;
   std::int64_t max_nodes = 200000;  ///< budget of expanded nodes for each search (bounds time)
+  /// Budget of wall-clock seconds of plan_routes (Lee wave, region and both searches; checked
+  /// in the searches) (a 6000 x 6000 map with a far goal
+  /// can otherwise run for minutes). Reaching it is a result: no route, budget_reached set.
+  double max_seconds = 30.0;
+  /// Called about once a second during the searches (not part of the config): the search
+  /// ("paper" or "exact"), the nodes it expanded so far and the seconds since plan_routes began.
+  std::function<void(const char* search, std::int64_t nodes, double seconds)> progress;
 };
 
 /// Offsets of every cell whose closed square the segment from (0,0) to (dx,dy) touches (cell
@@ -115,6 +123,8 @@ struct PlanResult {
   int paper_best_moves = -1;    ///< -1: the paper's rules found no route (or were not run)
   int exact_best_moves = -1;    ///< fewest moves proven by the exact search; -1: none / not run
   bool exact_complete = false;  ///< the exact search finished within max_nodes
+  /// A search stopped at its budget: "planner.max_nodes" or "planner.max_seconds"; "" if none.
+  std::string budget_reached;
   std::int64_t paper_nodes = 0, exact_nodes = 0;  ///< expanded nodes
 };
 
