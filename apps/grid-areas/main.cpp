@@ -17,6 +17,7 @@
 #include "indoormap/version.hpp"
 #include "main_guard.hpp"
 #include "map_yaml.hpp"
+#include "output_set.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
@@ -137,7 +138,8 @@ int run(int argc, char** argv) {
   }
 
   const auto t_write = Clock::now();
-  auto files = app::write_grid_areas_outputs(out, run);
+  app::OutputSet set(out, "grid-areas");  // all or nothing: docs/grid-areas.md, "Outputs"
+  auto files = app::write_grid_areas_outputs(set.dir(), run);
   files.push_back("summary.json");
   const json summary = {
       {"program", "grid-areas"},
@@ -152,7 +154,8 @@ int run(int argc, char** argv) {
         {"total", ms_since(t_start)}}},
       {"outputs", files},
   };
-  formats::write_json(out / "summary.json", summary);
+  formats::write_json(set.dir() / "summary.json", summary);
+  set.commit();
   if (!a.quiet) {
     const json s = app::areas_summary_json(run);
     char line[256];

@@ -12,6 +12,7 @@
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 #include "main_guard.hpp"
+#include "output_set.hpp"
 #include "scan_config.hpp"
 #include "scan_outputs.hpp"
 #include "scan_run.hpp"
@@ -118,7 +119,9 @@ int run(int argc, char** argv) {
       {"align", r.align_ms},
       {"total_before_write",
        std::chrono::duration<double, std::milli>(Clock::now() - t_start).count()}};
-  app::write_scan_features_outputs(out, r, timings);
+  app::OutputSet set(out, "scan-features");  // all or nothing: docs/scan-features.md
+  app::write_scan_features_outputs(set.dir(), r, timings);
+  set.commit();
   if (!a.quiet) {
     report(r);
     std::cout << "outputs written to " << out.string() << "\n";
