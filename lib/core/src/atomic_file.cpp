@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <string>
 #include <system_error>
 
 #include "indoormap/core/errors.hpp"
@@ -19,8 +20,14 @@ namespace {
 
 fs::path temp_name_for(const fs::path& path) {
   static std::atomic<unsigned> counter{0};
-  return path.parent_path() / ("." + path.filename().string() + ".tmp." +
-                               std::to_string(::getpid()) + "." + std::to_string(counter++));
+  // Appended piece by piece: gcc 12 warns falsely (-Wrestrict) on "." + std::string.
+  std::string name = ".";
+  name += path.filename().string();
+  name += ".tmp.";
+  name += std::to_string(::getpid());
+  name += '.';
+  name += std::to_string(counter++);
+  return path.parent_path() / name;
 }
 
 }  // namespace
