@@ -11,6 +11,11 @@
 
 namespace indoormap::app {
 
+namespace {
+// Scan numbers above this are refused (they index files scanNNN.3d; an int holds them).
+constexpr int kMaxScanNumber = 1'000'000;
+}  // namespace
+
 void add_pipeline_options(CLI::App& app, PipelineCli& cli) {
   app.add_option("inputs", cli.inputs,
                  "Point clouds: .pcd, .ply, .xyz/.txt, or a 3DTK scan directory (several are merged)");
@@ -78,8 +83,11 @@ PipelineConfig resolve_config(const PipelineCli& cli) {
     const std::string a = cli.scans.substr(0, dash);
     const std::string b = dash == std::string::npos ? a : cli.scans.substr(dash + 1);
     const double first = parse_number(a, "--scans"), last = parse_number(b, "--scans");
-    if (first < 0 || last < first || first != std::floor(first) || last != std::floor(last) || last > 1e6)
+    if (first < 0 || last < first || first != std::floor(first) || last != std::floor(last))
       throw UsageError("--scans: expected A-B with 0 <= A <= B, got '" + cli.scans + "'");
+    if (last > kMaxScanNumber)
+      throw UsageError("--scans: scan numbers are at most " + std::to_string(kMaxScanNumber) +
+                       ", got '" + cli.scans + "'");
     c.load.scan_first = static_cast<int>(first);
     c.load.scan_last = static_cast<int>(last);
   }

@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <string>
 
@@ -14,6 +15,12 @@ namespace indoormap::app {
 namespace fs = std::filesystem;
 
 namespace {
+
+std::string shortest(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
 
 double number_at(const YAML::Node& root, const char* key, const fs::path& file,
                  std::optional<double> fallback) {
@@ -87,8 +94,11 @@ formats::RosMap load_map_argument(const std::string& path, double resolution_m, 
       throw UsageError("--resolution is for plain PNG/PGM maps; " + path + " is a map YAML");
     return read_ros_map(path);
   }
-  if (!(resolution_m > 0))
+  if (resolution_m == 0.0)
     throw UsageError("map " + path + " is an image: give its --resolution in metres per pixel");
+  if (!(resolution_m > 0 && std::isfinite(resolution_m)))
+    throw UsageError("--resolution " + shortest(resolution_m) +
+                     ": must be a positive finite number of metres per pixel (map " + path + ")");
   return formats::read_plain_map(path, resolution_m, free_min);
 }
 

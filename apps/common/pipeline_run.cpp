@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "cloud_hints.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/draw/layout_png.hpp"
@@ -106,35 +107,43 @@ PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_
                                                      : "config";
   run.kept = loaded.cloud.points.size();
   if (keep_input_points) run.input_points = loaded.cloud.points;
+  std::string names;  // the data as a whole: every input
+  for (const auto& in : cli.inputs) names += (names.empty() ? "" : ", ") + in;
+  const CloudExtent extent = extent_of(loaded.cloud.points);
+  const std::string unit = unit_hint(extent, cfg.load.unit_m);  // empty unless over 1 km wide
   try {
     run.map = layout::make_map(std::move(loaded.cloud), cfg.map);
   } catch (const InputError& e) {
     if (!e.file().empty()) throw;
-    std::string names;  // the data as a whole is unusable: name every input
-    for (const auto& in : cli.inputs) names += (names.empty() ? "" : ", ") + in;
-    throw InputError(names, e.problem(), e.line());
+    std::string hint = unit;
+    if (hint.empty() && e.problem().starts_with("all points lie at one height"))
+      hint = height_hint(extent, cfg.map.voxel.bounds_gap_m);
+    throw InputError(names, e.problem() + (hint.empty() ? "" : "; " + hint), e.line());
+  } catch (const BudgetError& e) {  // a grid too large: most likely the unit, say so first
+    if (unit.empty()) throw;
+    throw InputError(names, unit + " (" + e.what() + ")");
   }
   run.map.warnings.insert(run.map.warnings.begin(), input_warnings.begin(), input_warnings.end());
+  if (const auto w = up_axis_warning(run.map.voxels, names); !w.empty())
+    run.map.warnings.push_back(w);
   // A map without a single wall, furniture or free cell is not a result: the points are too few
   // or too far apart for the cells (1e308 or kilometres apart gave an empty map with exit 0).
   const auto& lc = run.map.layout;
   if (lc.cells_wall + lc.cells_furniture + lc.cells_free == 0) {
-    std::string names;
-    for (const auto& in : cli.inputs) names += (names.empty() ? "" : ", ") + in;
     std::uint64_t dropped = 0;
     for (const auto& in : run.inputs) dropped += in.points_dropped;
-    char extent[160], cell[32];
+    char span[160], cell[32];
     const auto& g = run.map.geometry;
-    std::snprintf(extent, sizeof extent, "%.3g x %.3g m", g.width() * g.cell_m(),
+    std::snprintf(span, sizeof span, "%.3g x %.3g m", g.width() * g.cell_m(),
                   g.height() * g.cell_m());
     std::snprintf(cell, sizeof cell, "%g", g.cell_m());
-    throw InputError(
-        names,
-        "no map: the layout has no wall, furniture or free cell (" + std::to_string(run.kept) +
-            " points kept over " + extent +
-            (dropped ? ", " + std::to_string(dropped) + " non-finite or beyond float range dropped"
-                     : std::string()) +
-            "): too few points, or too far apart for cells of " + cell + " m (check --unit)");
+    throw InputError(names, "no map: the layout has no wall, furniture or free cell (" +
+                                std::to_string(run.kept) + " points kept over " + span +
+                                (dropped ? ", " + std::to_string(dropped) +
+                                               " non-finite or beyond float range dropped"
+                                         : std::string()) +
+                                "): too few points, or too far apart for cells of " + cell +
+                                " m (check --unit)" + (unit.empty() ? "" : "; " + unit));
   }
   return run;
 }

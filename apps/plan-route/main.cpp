@@ -103,8 +103,13 @@ int run(int argc, char** argv) {
   const double load_ms = ms_since(t0);
 
   t0 = std::chrono::steady_clock::now();
-  const planning::Templates templates =
-      planning::make_templates(cfg.robot, cfg.planner, map.geometry.cell_m());
+  const planning::Templates templates = [&] {
+    try {
+      return planning::make_templates(cfg.robot, cfg.planner, map.geometry.cell_m());
+    } catch (const BudgetError& e) {  // the resolution is the map file's: name it
+      throw InputError(a.map_path, e.what());
+    }
+  }();
   const double templates_ms = ms_since(t0);
   t0 = std::chrono::steady_clock::now();
   const auto safe = planning::safe_zone(map.cells, templates.disk, cfg.safe_zone);

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <numbers>
 #include <optional>
+#include <string>
 
 #include "indoormap/cloud_io/load.hpp"
 #include "indoormap/core/errors.hpp"
@@ -94,6 +96,37 @@ std::vector<std::string_view> lines_of(const std::string& text) {
   return out;
 }
 
+// Poses beyond this distance from the origin are refused (1,000,000 km; 3DTK poses are in cm).
+constexpr double kMaxTranslationCm = 1e11;
+
+std::string shortest(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+// Refuses, naming the pose file and line, a pose that would move the scan's points beyond float
+// range or onto one point or plane (an all-zero matrix): found later, on the points, it read as
+// "all points are non-finite" or "all points lie at one height" without the file.
+void check_pose(const std::string& file, std::size_t line, const std::array<double, 16>& m) {
+  if (!std::all_of(m.begin(), m.end(), [](double v) { return std::isfinite(v); }))
+    throw InputError(file, "the pose holds a value that is not finite", line);
+  const double t = std::hypot(m[12], m[13], m[14]);
+  if (t > kMaxTranslationCm)
+    throw InputError(file,
+                     "the pose's translation is " + shortest(t) +
+                         " cm from the origin (the limit is 1e11 cm): not a scan position",
+                     line);
+  const double det = m[0] * (m[5] * m[10] - m[9] * m[6]) - m[4] * (m[1] * m[10] - m[9] * m[2]) +
+                     m[8] * (m[1] * m[6] - m[5] * m[2]);
+  if (!(std::abs(det) > 0.5 && std::abs(det) < 2))
+    throw InputError(file,
+                     "the matrix's rotation part has determinant " + shortest(det) +
+                         ", expected 1 (a rotation; an all-zero matrix would put every point of "
+                         "the scan at one point)",
+                     line);
+}
+
 // The last non-empty line of a .frames file: 16 numbers (column-major 4x4) and a type code.
 std::array<double, 16> read_frames(const std::string& file) {
   const std::string text = read_file_bytes(file, kMaxPoseFileBytes);
@@ -108,6 +141,7 @@ std::array<double, 16> read_frames(const std::string& file) {
                        i + 1);
     std::array<double, 16> m;
     std::copy_n(v.begin(), 16, m.begin());
+    check_pose(file, i + 1, m);
     return m;
   }
   throw InputError(file, "frames file has no matrix line");
@@ -127,7 +161,9 @@ std::array<double, 16> read_pose(const std::string& file) {
                        i + 1);
     std::copy_n(v.begin(), 3, i == 0 ? t : r);
   }
-  return tdtk_pose_to_matrix(t, r);
+  const auto m = tdtk_pose_to_matrix(t, r);
+  check_pose(file, std::isfinite(r[0] + r[1] + r[2]) ? 1 : 2, m);
+  return m;
 }
 
 // The 3DTK frame (cm, left-handed, y up) to the output frame (m, right-handed, z up).

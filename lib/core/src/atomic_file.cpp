@@ -67,6 +67,12 @@ void ensure_writable_dir(const fs::path& dir) {
   std::error_code ec;
   if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
     throw OutputError(dir.string(), "exists and is not a directory");
+  // fs::exists follows links: a dangling link would reach create_directories, whose error is a
+  // bare "File exists".
+  if (fs::is_symlink(fs::symlink_status(dir, ec)) && !fs::exists(dir, ec))
+    throw OutputError(dir.string(), "is a symbolic link to '" + fs::read_symlink(dir, ec).string() +
+                                        "', which does not exist (a dangling link): create its "
+                                        "target or give another output directory");
   fs::create_directories(dir, ec);
   if (ec) throw OutputError(dir.string(), ec.message());
   const fs::path probe = temp_name_for(dir / "probe");

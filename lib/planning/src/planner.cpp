@@ -74,6 +74,7 @@ void validate(const RobotParams& robot, const PlannerParams& params) {
 
 Templates make_templates(const RobotParams& robot, const PlannerParams& params, double cell_m) {
   validate(robot, params);
+  check_disk_size(robot, cell_m);
   return {make_disk_template(d_save_m(robot), cell_m),
           make_neighbourhood_template(params.d_max_m, cell_m)};
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "indoormap/core/errors.hpp"
@@ -21,6 +22,25 @@ double d_save_m(const RobotParams& robot) {
   return std::max(robot.width_m / 2.0, robot.length_m / 2.0) + robot.extra_m;
 }
 
+namespace {
+std::string shortest(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+}  // namespace
+
+void check_disk_size(const RobotParams& robot, double cell_m) {
+  const double cells = d_save_m(robot) / cell_m;
+  if (!(cells > kMaxDiskRadiusCells)) return;
+  throw BudgetError(
+      "the robot's clearance d_save = max(robot.width_m, robot.length_m) / 2 + "
+      "robot.extra_m = " +
+      shortest(d_save_m(robot)) + " m is " + shortest(cells) + " cells of the map resolution " +
+      shortest(cell_m) + " m, above the limit of " + shortest(kMaxDiskRadiusCells) +
+      " cells: check the robot size (metres) and the map resolution");
+}
+
 DiskTemplate make_disk_template(double d_save, double cell_m) {
   if (!(cell_m > 0) || !std::isfinite(cell_m))
     throw UsageError("disk template: cell_m must be > 0");
@@ -28,7 +48,8 @@ DiskTemplate make_disk_template(double d_save, double cell_m) {
     throw UsageError("disk template: d_save must be >= 0");
   DiskTemplate t;
   t.radius_cells = d_save / cell_m;
-  if (t.radius_cells > 2000) throw BudgetError("disk template: d_save / cell_m > 2000 cells");
+  if (t.radius_cells > kMaxDiskRadiusCells)
+    throw BudgetError("disk template: d_save / cell_m > 2000 cells");
   // The paper enumerates the circle's points by (R, phi) (formula 2); the set of unique offsets
   // it produces is the integer disk, which we enumerate directly. The tolerance keeps offsets
   // whose squared length equals r^2 up to rounding (0.15 / 0.05 is 2.9999999999999996).

@@ -2,6 +2,7 @@
 // lines.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "indoormap/core/errors.hpp"
@@ -43,9 +44,15 @@ NeighbourhoodTemplate make_neighbourhood_template(double d_max_m, double cell_m)
   if (!(d_max_m > 0) || !std::isfinite(d_max_m))
     throw UsageError("neighbourhood template: d_max_m must be > 0");
   const double rc = d_max_m / cell_m;
-  if (rc > 300)
-    throw BudgetError("neighbourhood template: d_max_m / cell_m = " + std::to_string(rc) +
-                      " cells exceeds 300 (the template would need too much memory)");
+  if (rc > 300) {
+    char msg[320];
+    std::snprintf(msg, sizeof msg,
+                  "planner.d_max_m %g m is %g cells of the map resolution %g m, above the limit "
+                  "of 300 cells (the neighbourhood template would need too much memory): check "
+                  "planner.d_max_m and the map resolution",
+                  d_max_m, rc, cell_m);
+    throw BudgetError(msg);
+  }
   NeighbourhoodTemplate t;
   t.cell_m = cell_m;
   t.d_max_m = d_max_m;

@@ -40,6 +40,14 @@ struct DiskTemplate {
 };
 DiskTemplate make_disk_template(double d_save_m, double cell_m);
 
+/// Largest disk radius make_disk_template builds, in cells.
+inline constexpr double kMaxDiskRadiusCells = 2000;
+
+/// Throws BudgetError when the robot's d_save is above kMaxDiskRadiusCells cells of cell_m,
+/// naming the robot keys, d_save and the cell size (a robot size in the wrong unit, or a map
+/// resolution far too fine). Called by make_templates before make_disk_template.
+void check_disk_size(const RobotParams& robot, double cell_m);
+
 struct SafeZoneParams {
   /// Unknown cells of M_r count as obstacles (the robot keeps d_save from unexplored space).
   /// Cells beyond the grid's edge always count as obstacles.
