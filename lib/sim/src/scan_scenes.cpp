@@ -85,10 +85,15 @@ ScanScene random_scan_scene(std::uint64_t seed, const ScanSceneParams& p) {
     const double len = (s.walls[i].b - s.walls[i].a).norm();
     const double width = uni(p.min_door_m, p.max_door_m);
     if (len < width + 2.0 || u01(rng) >= p.door_share) continue;
-    add_door(s, i, width, uni(0.9, len - width - 0.9), uni(1.2, 2.5), uni(0.3, 0.6));
+    // One draw per statement (the order of a call's arguments is unspecified: gcc and clang
+    // differ), in the order gcc gave when they were arguments, so the scenes stay as they were.
+    const double margin_m = uni(0.3, 0.6), depth_m = uni(1.2, 2.5);
+    const double offset_m = uni(0.9, len - width - 0.9);
+    add_door(s, i, width, offset_m, depth_m, margin_m);
   }
   if (u01(rng) < p.pillar_share) {
-    const V c(uni(0.35, 0.65) * w * 0.6 + 0.2 * w, uni(0.25, 0.4) * h);
+    const double cy = uni(0.25, 0.4) * h;  // drawn first, as above
+    const V c(uni(0.35, 0.65) * w * 0.6 + 0.2 * w, cy);
     const double side = uni(0.4, 0.8);
     // Clockwise, so that the free side (outside the pillar) is on the left of every wall.
     Polygon pillar = rectangle(c, {side, side}, uni(0.0, std::numbers::pi / 2));
@@ -144,7 +149,8 @@ laser::Pose2d random_pose(const ScanScene& scene, double clearance_m, std::mt199
   std::uniform_real_distribution<double> ux(lo.x(), hi.x()), uy(lo.y(), hi.y()),
       ut(-std::numbers::pi, std::numbers::pi);
   for (int attempt = 0; attempt < 10000; ++attempt) {
-    const V p(ux(rng), uy(rng));
+    const double y = uy(rng);  // one draw per statement, gcc's order (see random_scan_scene)
+    const V p(ux(rng), y);
     if (!contains(scene.room, p) || (!scene.pillar.empty() && contains(scene.pillar, p))) continue;
     bool clear = true;
     for (const ScanSegment& w : scene.walls) {
