@@ -20,30 +20,51 @@ std::string joined(const std::set<std::string>& names, const char* separator) {
 }  // namespace
 
 // yaml-cpp keeps both entries of a key given twice and node[key] finds the first, so the second
-// would be ignored without a word: every mapping, at any depth, is checked.
-static void check_unique_keys(const YAML::Node& n, const std::string& path,
-                              const std::string& where) {
-  if (n.IsSequence()) {
-    for (std::size_t i = 0; i < n.size(); ++i)
-      check_unique_keys(n[i], path, where + "[" + std::to_string(i) + "]");
-    return;
+// would be ignored without a word: every mapping, at any depth, is checked. Aliases make the node
+// tree a graph (an anchor may even contain its own alias: a cycle), so the walk is bounded in depth
+// and in nodes visited; a file beyond either bound is refused (no config comes near them).
+namespace {
+
+constexpr int kMaxYamlDepth = 64;
+constexpr std::size_t kMaxYamlVisits = 1'000'000;
+
+struct KeyCheck {
+  const std::string& path;
+  std::size_t visits = 0;
+
+  void walk(const YAML::Node& n, const std::string& where, int depth) {
+    if (depth > kMaxYamlDepth)
+      throw InputError(path,
+                       "nested deeper than " + std::to_string(kMaxYamlDepth) + " levels at '" +
+                           where + "' (or an alias that refers to itself)",
+                       line_of(n));
+    if (++visits > kMaxYamlVisits)
+      throw InputError(path, "more than " + std::to_string(kMaxYamlVisits) +
+                                 " nodes once its aliases are expanded");
+    if (n.IsSequence()) {
+      for (std::size_t i = 0; i < n.size(); ++i)
+        walk(n[i], where + "[" + std::to_string(i) + "]", depth + 1);
+      return;
+    }
+    if (!n.IsMap()) return;
+    std::set<std::string> seen;
+    for (const auto& kv : n) {
+      if (!kv.first.IsScalar()) continue;  // refused by name where keys are read
+      const std::string key = where.empty() ? kv.first.Scalar() : where + "." + kv.first.Scalar();
+      if (!seen.insert(kv.first.Scalar()).second)
+        throw InputError(path, "key '" + key + "' is given twice", line_of(kv.first));
+      walk(kv.second, key, depth + 1);
+    }
   }
-  if (!n.IsMap()) return;
-  std::set<std::string> seen;
-  for (const auto& kv : n) {
-    if (!kv.first.IsScalar()) continue;  // refused by name where keys are read
-    const std::string key = where.empty() ? kv.first.Scalar() : where + "." + kv.first.Scalar();
-    if (!seen.insert(kv.first.Scalar()).second)
-      throw InputError(path, "key '" + key + "' is given twice", line_of(kv.first));
-    check_unique_keys(kv.second, path, key);
-  }
-}
+};
+
+}  // namespace
 
 YAML::Node load_yaml_file(const std::string& path, const std::string& role) {
   const std::string bytes = read_input_file(path, kMaxTextInputBytes, role);
   try {
     YAML::Node root = YAML::Load(bytes);
-    check_unique_keys(root, path, "");
+    KeyCheck{path}.walk(root, "", 0);
     return root;
   } catch (const YAML::Exception& e) {
     throw InputError(path, "invalid YAML: " + e.msg,
