@@ -149,8 +149,12 @@ inline void expect_valid_chain(const border::BorderResult& r, const std::string&
   EXPECT_NEAR(r.perimeter_m, indoormap::perimeter(r.polygon_m), 1e-9);
 }
 
+// Appends rather than `"(" + std::to_string(...)`, which gcc 12 at -O3 flags with a false
+// -Wstringop-overflow.
 inline std::string fmt(const Eigen::Vector2d& v) {
-  return "(" + std::to_string(v.x()) + ", " + std::to_string(v.y()) + ")";
+  std::string s = "(";
+  s.append(std::to_string(v.x())).append(", ").append(std::to_string(v.y())).append(")");
+  return s;
 }
 
 // Symmetric Hausdorff distance between polygon boundaries sampled every 1 cm.
