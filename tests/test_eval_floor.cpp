@@ -74,7 +74,8 @@ TEST(FloorEval, ReachabilityCountsComponentsHoldingScanners) {
   EXPECT_EQ(open.components, 1);
   EXPECT_TRUE(open.all_reachable);
   // A scanner on the wall band snaps to the nearest robot cell; one far outside stays unplaced.
-  const ReachScores snap = evaluate_reachability({{1.0, 2.1}, {3.0, 3.0}, {40.0, 40.0}}, g, wall_grid(0.9));
+  const ReachScores snap =
+      evaluate_reachability({{1.0, 2.1}, {3.0, 3.0}, {40.0, 40.0}}, g, wall_grid(0.9));
   EXPECT_EQ(snap.unplaced, 1);
   EXPECT_EQ(snap.component[0], snap.component[1]);
   EXPECT_EQ(snap.components, 2);
@@ -157,7 +158,8 @@ TEST(FloorEval, ObjectRecallCountsItemsOfTheMinimumAreaPrecisionEverything) {
 TEST(MapEval, TwoStoreyTruthEvaluatedPerStorey) {
   const fs::path dir = test::scratch_dir();
   const fs::path sim = dir / "sim", res = dir / "result";
-  auto r = test::run_app("scene-sim", "--random --seed 2 --rooms 2 --storeys 2 --step-deg 3 -q -o " + sim.string());
+  auto r = test::run_app(
+      "scene-sim", "--random --seed 2 --rooms 2 --storeys 2 --step-deg 3 -q -o " + sim.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   // The result: per storey the truth itself as layout and as navigation map (walls and
   // furniture occupied), with the result floors 3 cm above the truth.
@@ -174,11 +176,12 @@ TEST(MapEval, TwoStoreyTruthEvaluatedPerStorey) {
     std::string yaml = test::read_text(sim / s / "ground_truth_layout.yaml");
     yaml = test::replace_all(yaml, "ground_truth_layout.pgm", "map.pgm");
     test::write_text(res / s / "map.yaml", yaml);
-    summary["storeys"].push_back({{"floor_z_m", gt["storeys"][k]["floor_z_m"].get<double>() + 0.03}});
+    summary["storeys"].push_back(
+        {{"floor_z_m", gt["storeys"][k]["floor_z_m"].get<double>() + 0.03}});
   }
   test::write_text(res / "summary.json", summary.dump());
-  r = test::run_app("map-eval", "--truth " + (sim / "ground_truth.json").string() + " --result " + res.string() +
-                                    " -o " + (dir / "eval").string());
+  r = test::run_app("map-eval", "--truth " + (sim / "ground_truth.json").string() + " --result " +
+                                    res.string() + " -o " + (dir / "eval").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json e = json::parse(test::read_text(dir / "eval" / "eval.json"));
   ASSERT_EQ(e["storeys"].size(), 2u);

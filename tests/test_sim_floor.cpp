@@ -36,7 +36,8 @@ Scene two_rooms_no_door() {
   for (int k = 0; k < 2; ++k) {
     Room r;
     r.name = k == 0 ? "a" : "b";
-    r.polygon = k == 0 ? Polygon{{0, 0}, {4, 0}, {4, 3}, {0, 3}} : Polygon{{4.2, 0}, {6.2, 0}, {6.2, 3}, {4.2, 3}};
+    r.polygon = k == 0 ? Polygon{{0, 0}, {4, 0}, {4, 3}, {0, 3}}
+                       : Polygon{{4.2, 0}, {6.2, 0}, {6.2, 3}, {4.2, 3}};
     r.wall_thickness_m = 0.2;
     r.ceiling.height_m = 2.5;
     s.rooms.push_back(r);
@@ -48,7 +49,8 @@ Scene two_rooms_no_door() {
   return s;
 }
 
-int count_in(const TruthLayout& L, const Grid<std::uint8_t>& m, double x0, double x1, bool want_free_only) {
+int count_in(const TruthLayout& L, const Grid<std::uint8_t>& m, double x0, double x1,
+             bool want_free_only) {
   int n = 0;
   for (int r = 0; r < L.geometry.height(); ++r)
     for (int c = 0; c < L.geometry.width(); ++c) {
@@ -77,7 +79,8 @@ TEST(SimStoreys, SlabBetweenStoreysAndFloorsWhereTheTruthSays) {
   EXPECT_EQ(b.storeys[1].scene.tilt.roll_deg, b.storeys[0].scene.tilt.roll_deg);
   for (auto& st : b.storeys) coarse(st.scene);
   const BuildingSim bs = simulate_building(b);
-  ASSERT_EQ(bs.scanner_storey.size(), b.storeys[0].scene.scanners.size() + b.storeys[1].scene.scanners.size());
+  ASSERT_EQ(bs.scanner_storey.size(),
+            b.storeys[0].scene.scanners.size() + b.storeys[1].scene.scanners.size());
   // Back in the scene frame: both faces of the slab are scanned, nothing lies inside it.
   const Eigen::Matrix3d Rt = tilt_rotation(b.storeys[0].scene.tilt).transpose();
   const double top0 = b.storeys[0].ceiling_z_m, floor1 = b.storeys[1].floor_z_m;
@@ -110,7 +113,8 @@ TEST(SimSeen, CellsBehindAWallAreNotSeen) {
     }
   // With the band cut to 2 cm only floor hits count: fewer cells (the scanner sees no floor
   // within 1.5 m of itself: elevation_min_deg -40 from 1.3 m).
-  const auto floor_only = seen_cells(L, sim, s.tilt, {}, 0, 0.0, {.min_height_m = -0.05, .max_height_m = 0.02});
+  const auto floor_only =
+      seen_cells(L, sim, s.tilt, {}, 0, 0.0, {.min_height_m = -0.05, .max_height_m = 0.02});
   EXPECT_LT(seen_count(floor_only), seen_count(seen));
   EXPECT_GT(seen_count(floor_only), 0);
 }
@@ -179,7 +183,8 @@ TEST(SimMobile, DeterministicAndTheTrajectoryReadsBack) {
   int n = 0;
   for (std::string tok; cols >> tok;) ++n;
   EXPECT_EQ(n, 8);
-  for (const char* bad : {"0 1 2 3 0 0 0 1\n0 1 2 x 0 0 0 1\n", "0 1 2 3 0 0 1\n", "0 1 2 3 0 0 0 2\n"}) {
+  for (const char* bad :
+       {"0 1 2 3 0 0 0 1\n0 1 2 x 0 0 0 1\n", "0 1 2 3 0 0 1\n", "0 1 2 3 0 0 0 2\n"}) {
     test::write_text(f, bad);
     EXPECT_THROW(formats::read_tum_trajectory(f), InputError) << bad;
   }

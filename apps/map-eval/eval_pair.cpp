@@ -138,8 +138,8 @@ struct ResultGrid {
 
 /// The "floor" block: every metric that has its inputs; the others null with a note.
 ordered_json floor_json(const formats::TruthFile& truth, const Grid<Cell>& truth_cells,
-                        const std::optional<ResultGrid>& layout, const std::optional<ResultGrid>& map,
-                        const PairParams& p) {
+                        const std::optional<ResultGrid>& layout,
+                        const std::optional<ResultGrid>& map, const PairParams& p) {
   ordered_json j;
   const GridGeometry& tg = truth.layout_geometry;
   const sim::Mask truth_free = sim::class_mask(truth_cells, Cell::kFree);
@@ -157,17 +157,20 @@ ordered_json floor_json(const formats::TruthFile& truth, const Grid<Cell>& truth
   for (const auto& [name, grid] : {std::pair{"layout", &layout}, std::pair{"map", &map}}) {
     ordered_json k;
     if (!*grid) {
-      k["seen_free_iou"] = null_note(name == std::string("map") ? no_map : "no layout.pgm in the result");
+      k["seen_free_iou"] =
+          null_note(name == std::string("map") ? no_map : "no layout.pgm in the result");
       j[name] = k;
       continue;
     }
     const ResultGrid& r = **grid;
     const sim::Mask free = sim::class_mask(r.cells, Cell::kFree);
-    k["seen_free_iou"] = seen ? seen_json(sim::evaluate_seen_free(tg, truth_free, *seen, r.geometry, free))
-                              : null_note(no_seen);
-    k["free_iou_all"] = seen_json(sim::evaluate_seen_free(tg, truth_free, truth_free, r.geometry, free));
-    k["wall_faces"] = faces_json(
-        sim::evaluate_wall_faces(tg, truth_cells, r.geometry, sim::class_mask(r.cells, Cell::kWall)));
+    k["seen_free_iou"] =
+        seen ? seen_json(sim::evaluate_seen_free(tg, truth_free, *seen, r.geometry, free))
+             : null_note(no_seen);
+    k["free_iou_all"] =
+        seen_json(sim::evaluate_seen_free(tg, truth_free, truth_free, r.geometry, free));
+    k["wall_faces"] = faces_json(sim::evaluate_wall_faces(tg, truth_cells, r.geometry,
+                                                          sim::class_mask(r.cells, Cell::kWall)));
     j[name] = k;
   }
   if (!map) {
@@ -179,24 +182,25 @@ ordered_json floor_json(const formats::TruthFile& truth, const Grid<Cell>& truth
   const sim::DoorScores d = sim::evaluate_doors(truth.doors, map->geometry, free, p.robot_width_m);
   ordered_json dl = ordered_json::array();
   for (const auto& x : d.list) dl.push_back({{"id", x.id}, {"open", x.open}});
-  j["doors"] = {{"doors", d.doors}, {"open", d.open}, {"open_share", opt(d.open_share)}, {"list", dl}};
+  j["doors"] = {
+      {"doors", d.doors}, {"open", d.open}, {"open_share", opt(d.open_share)}, {"list", dl}};
   const sim::ReachScores r =
       sim::evaluate_reachability(truth.scanners_xy_m, map->geometry, free, p.robot_width_m);
-  j["reachability"] = {{"scanners", r.scanners},
-                       {"components", r.components},
-                       {"unplaced", r.unplaced},
-                       {"all_reachable", r.all_reachable},
-                       {"component", r.component},
-                       {"free_space", "map.pgm free cells eroded by the robot radius"}};
+  j["reachability"] = {
+      {"scanners", r.scanners},   {"components", r.components},
+      {"unplaced", r.unplaced},   {"all_reachable", r.all_reachable},
+      {"component", r.component}, {"free_space", "map.pgm free cells eroded by the robot radius"}};
   return j;
 }
 
 }  // namespace
 
-PairReport evaluate_pair(const formats::TruthFile& truth, const fs::path& dir, const PairParams& p) {
+PairReport evaluate_pair(const formats::TruthFile& truth, const fs::path& dir,
+                         const PairParams& p) {
   PairReport out;
   ordered_json& report = out.json;
-  const Grid<Cell> truth_cells = formats::read_layout_pgm(truth.layout_image, truth.layout_geometry);
+  const Grid<Cell> truth_cells =
+      formats::read_layout_pgm(truth.layout_image, truth.layout_geometry);
   std::optional<ResultGrid> layout, map;
   // Layout.
   if (fs::exists(dir / "layout.pgm")) {
@@ -205,7 +209,8 @@ PairReport evaluate_pair(const formats::TruthFile& truth, const fs::path& dir, c
     const GridGeometry rg = result_geometry(dir, raw, source);
     layout = ResultGrid{rg, formats::read_layout_pgm(dir / "layout.pgm", rg)};
     ordered_json j = {{"status", "ok"}, {"file", "layout.pgm"}, {"geometry_from", source}};
-    j.update(layout_json(sim::evaluate_layout(truth.layout_geometry, truth_cells, rg, layout->cells)));
+    j.update(
+        layout_json(sim::evaluate_layout(truth.layout_geometry, truth_cells, rg, layout->cells)));
     report["layout"] = j;
     ++out.evaluated;
   } else {
@@ -243,7 +248,8 @@ PairReport evaluate_pair(const formats::TruthFile& truth, const fs::path& dir, c
   if (fs::exists(dir / "map.yaml") && fs::exists(map_image())) {
     const formats::RosMap m = app::read_ros_map(dir / "map.yaml");
     if (m.meta.origin.z() != 0.0)
-      throw InputError((dir / "map.yaml").string(), "key 'origin': a rotated map (yaw != 0) is not supported");
+      throw InputError((dir / "map.yaml").string(),
+                       "key 'origin': a rotated map (yaw != 0) is not supported");
     map = ResultGrid{m.geometry, m.cells};
     ++out.evaluated;
   }  // else: the floor block's map metrics are null with a note (not in "missing": older runs)

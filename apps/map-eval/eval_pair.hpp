@@ -18,9 +18,9 @@ struct PairParams {
 };
 
 struct PairReport {
-  nlohmann::ordered_json json;        ///< layout, objects, room, floor, missing
-  std::vector<std::string> missing;   ///< result files not found
-  int evaluated = 0;                  ///< of layout.pgm, objects.json, room.geojson, map.pgm
+  nlohmann::ordered_json json;       ///< layout, objects, room, floor, missing
+  std::vector<std::string> missing;  ///< result files not found
+  int evaluated = 0;                 ///< of layout.pgm, objects.json, room.geojson, map.pgm
 };
 
 /// Never throws for a missing optional file: its metric is null with a note. Throws InputError

@@ -115,8 +115,9 @@ WrittenOutputs write_building_outputs(const fs::path& dir, const Building& build
     js["storey"] = k;
     js["floor_z_m"] = st.floor_z_m;
     js["ceiling_z_m"] = st.ceiling_z_m;
-    js["frame"] = "storey frame: the scene frame with z measured from this storey's floor "
-                  "(z_scene = z + floor_z_m); position_cloud_m is in the merged cloud's frame";
+    js["frame"] =
+        "storey frame: the scene frame with z measured from this storey's floor "
+        "(z_scene = z + floor_z_m); position_cloud_m is in the merged cloud's frame";
     js["cloud"]["file"] = "../" + std::string(formats::kTruthCloud);
     js["cloud"]["points"] = view.returns;
     js["cloud"]["note"] = "points and scans of this storey in the merged cloud";
@@ -136,11 +137,13 @@ WrittenOutputs write_building_outputs(const fs::path& dir, const Building& build
     // The top level is storey 0 (its layout under storey_0/) plus the list of every storey.
     for (const char* key : {"image", "picture", "yaml"})
       j["layout"][key] = "storey_0/" + j["layout"][key].get<std::string>();
-    j["cloud"] = {{"file", formats::kTruthCloud}, {"frame", "tilted"}, {"points", sim.points.size()},
-                  {"rays", sim.rays}, {"mixed_pixels", sim.mixed_pixels}, {"scans", sim.scans.size()}};
+    j["cloud"] = {{"file", formats::kTruthCloud},     {"frame", "tilted"},
+                  {"points", sim.points.size()},      {"rays", sim.rays},
+                  {"mixed_pixels", sim.mixed_pixels}, {"scans", sim.scans.size()}};
     j.erase("storey");
-    j["frame"] = "scene frame: metres, right-handed, z up, storey k's floor at z = floor_z_m. "
-                 "The cloud is in the tilted frame: p_cloud = tilt.rotation * p_scene.";
+    j["frame"] =
+        "scene frame: metres, right-handed, z up, storey k's floor at z = floor_z_m. "
+        "The cloud is in the tilted frame: p_cloud = tilt.rotation * p_scene.";
     j["storeys"] = storeys;
   }
   if (mobile) {
@@ -150,8 +153,9 @@ WrittenOutputs write_building_outputs(const fs::path& dir, const Building& build
         p.position_m.z() += st.floor_z_m;
         poses.push_back(p);
       }
-    formats::write_tum_trajectory(dir / kTrajectory, trajectory(poses, building.storeys.front().scene.tilt,
-                                                                mobile->speed_m_s));
+    formats::write_tum_trajectory(
+        dir / kTrajectory,
+        trajectory(poses, building.storeys.front().scene.tilt, mobile->speed_m_s));
     out.files.push_back(kTrajectory);
     j["mobile"] = {{"trajectory", kTrajectory},
                    {"positions", poses.size()},

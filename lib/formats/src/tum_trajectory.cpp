@@ -51,8 +51,9 @@ std::vector<sim::TrajectoryPose> read_tum_trajectory(const std::filesystem::path
       v.push_back(x);
     }
     if (v.size() != 8)
-      throw InputError(path.string(),
-                       "expected 8 columns (t x y z qx qy qz qw), found " + std::to_string(v.size()), n);
+      throw InputError(
+          path.string(),
+          "expected 8 columns (t x y z qx qy qz qw), found " + std::to_string(v.size()), n);
     sim::TrajectoryPose p;
     p.t_s = v[0];
     p.position_m = {v[1], v[2], v[3]};

@@ -53,13 +53,16 @@ SeenIou evaluate_seen_free(const GridGeometry& tg, const Mask& truth_free, const
 FaceScores evaluate_wall_faces(const GridGeometry& tg, const Grid<Cell>& truth,
                                const GridGeometry& rg, const Mask& result_wall) {
   Mask face(truth.width, truth.height, 0);
-  auto is_free = [&](int c, int r) { return truth.contains(c, r) && truth.at(c, r) == Cell::kFree; };
+  auto is_free = [&](int c, int r) {
+    return truth.contains(c, r) && truth.at(c, r) == Cell::kFree;
+  };
   FaceScores f;
   int hit = 0;
   for (int r = 0; r < truth.height; ++r)
     for (int c = 0; c < truth.width; ++c) {
       if (truth.at(c, r) != Cell::kWall) continue;
-      if (!(is_free(c - 1, r) || is_free(c + 1, r) || is_free(c, r - 1) || is_free(c, r + 1))) continue;
+      if (!(is_free(c - 1, r) || is_free(c + 1, r) || is_free(c, r - 1) || is_free(c, r + 1)))
+        continue;
       face.at(c, r) = 1;
       ++f.truth_faces;
       hit += near(result_wall, rg, tg.center_of({c, r}));
@@ -81,7 +84,8 @@ Mask erode_free(const Mask& free, double cell_m, double radius_m) {
   std::vector<std::pair<int, int>> disc;
   for (int dy = -k; dy <= k; ++dy)
     for (int dx = -k; dx <= k; ++dx)
-      if ((dx * dx + dy * dy) * cell_m * cell_m <= radius_m * radius_m + 1e-12) disc.emplace_back(dx, dy);
+      if ((dx * dx + dy * dy) * cell_m * cell_m <= radius_m * radius_m + 1e-12)
+        disc.emplace_back(dx, dy);
   Mask out(free.width, free.height, 0);
   for (int r = 0; r < free.height; ++r)
     for (int c = 0; c < free.width; ++c) {

@@ -22,8 +22,10 @@ int columns(const Scene& scene, const MobileParams& p) {
 }  // namespace
 
 void validate(const MobileParams& p) {
-  if (!(p.step_m >= 0.05 && p.step_m <= 10)) throw UsageError("mobile step must be in [0.05, 10] m");
-  if (!(p.ray_share > 0 && p.ray_share <= 1)) throw UsageError("mobile ray share must be in (0, 1]");
+  if (!(p.step_m >= 0.05 && p.step_m <= 10))
+    throw UsageError("mobile step must be in [0.05, 10] m");
+  if (!(p.ray_share > 0 && p.ray_share <= 1))
+    throw UsageError("mobile ray share must be in (0, 1]");
   if (p.beams < 1 || p.beams > 128) throw UsageError("mobile beams must be in [1, 128]");
   if (!(p.elevation_min_deg >= -90 && p.elevation_min_deg < p.elevation_max_deg &&
         p.elevation_max_deg <= 90))
@@ -32,7 +34,8 @@ void validate(const MobileParams& p) {
     throw UsageError("mobile sensor height must be in [0.1, 3] m");
   if (!(p.clearance_m >= 0 && p.clearance_m <= 2))
     throw UsageError("mobile clearance must be in [0, 2] m");
-  if (!(p.speed_m_s > 0 && p.speed_m_s <= 100)) throw UsageError("mobile speed must be in (0, 100] m/s");
+  if (!(p.speed_m_s > 0 && p.speed_m_s <= 100))
+    throw UsageError("mobile speed must be in (0, 100] m/s");
 }
 
 std::uint64_t mobile_ray_count(const Scene& scene, const MobileParams& p) {
@@ -55,7 +58,8 @@ SimResult simulate_mobile(const Scene& input, const MobileParams& p, const SimOp
       pat.elevation_deg.push_back(p.elevation_min_deg + (j + phase) * spacing);
     pat.azimuths = n_col;
     pat.azimuth_step_deg = 360.0 / n_col;
-    pat.azimuth_offset_deg = std::fmod(static_cast<double>(k) * (1 - kGolden), 1.0) * pat.azimuth_step_deg;
+    pat.azimuth_offset_deg =
+        std::fmod(static_cast<double>(k) * (1 - kGolden), 1.0) * pat.azimuth_step_deg;
     return pat;
   });
 }
@@ -70,8 +74,8 @@ std::vector<TrajectoryPose> trajectory(const std::vector<ScannerPose>& scanners,
     TrajectoryPose tp;
     tp.t_s = t;
     tp.position_m = R * scanners[i].position_m;
-    const Eigen::Quaterniond yaw(
-        Eigen::AngleAxisd(scanners[i].heading_deg * std::numbers::pi / 180.0, Eigen::Vector3d::UnitZ()));
+    const Eigen::Quaterniond yaw(Eigen::AngleAxisd(
+        scanners[i].heading_deg * std::numbers::pi / 180.0, Eigen::Vector3d::UnitZ()));
     tp.orientation = yaw;  // the ray pattern is regular in the tilted frame (simulate.hpp)
     out.push_back(tp);
   }

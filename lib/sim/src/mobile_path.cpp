@@ -62,7 +62,8 @@ Search dijkstra(int w, int h, const std::vector<double>& clear, double min_clear
     const int x = i % w, y = i / w;
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) {
-        if ((dx == 0 && dy == 0) || x + dx < 0 || y + dy < 0 || x + dx >= w || y + dy >= h) continue;
+        if ((dx == 0 && dy == 0) || x + dx < 0 || y + dy < 0 || x + dx >= w || y + dy >= h)
+          continue;
         const int j = (y + dy) * w + x + dx;
         if (clear[j] < min_clear) continue;
         const double nd = d + cell_m * ((dx != 0 && dy != 0) ? std::numbers::sqrt2 : 1.0);
@@ -109,11 +110,14 @@ MobilePath plan_mobile_path(const Scene& scene, const TruthLayout& L, const Mobi
   int start = -1;
   std::vector<int> targets;
   for (const Room& room : scene.rooms) {
-    const Eigen::Vector2d dir =
-        room.polygon.size() >= 2 ? (room.polygon[1] - room.polygon[0]).normalized() : Eigen::Vector2d::UnitX();
+    const Eigen::Vector2d dir = room.polygon.size() >= 2
+                                    ? (room.polygon[1] - room.polygon[0]).normalized()
+                                    : Eigen::Vector2d::UnitX();
     const int cell = best_cell(L, clear, room.polygon, dir);
-    if (room.kind == RoomKind::kCorridor && start < 0) start = cell;
-    else if (cell >= 0) targets.push_back(cell);
+    if (room.kind == RoomKind::kCorridor && start < 0)
+      start = cell;
+    else if (cell >= 0)
+      targets.push_back(cell);
   }
   MobilePath out;
   if (start < 0 && !targets.empty()) {
@@ -137,7 +141,8 @@ MobilePath plan_mobile_path(const Scene& scene, const TruthLayout& L, const Mobi
       } else {
         double best = kInf;
         for (std::size_t k = 0; k < targets.size(); ++k)
-          if (!done[k] && s.dist[targets[k]] < best) best = s.dist[targets[k]], pick = static_cast<int>(k);
+          if (!done[k] && s.dist[targets[k]] < best)
+            best = s.dist[targets[k]], pick = static_cast<int>(k);
       }
       if (pick != -1) break;
     }
@@ -169,8 +174,10 @@ MobilePath plan_mobile_path(const Scene& scene, const TruthLayout& L, const Mobi
   }
   for (std::size_t i = 0; i < samples.size(); ++i) {
     Eigen::Vector2d d = Eigen::Vector2d::UnitX();
-    if (i + 1 < samples.size()) d = samples[i + 1] - samples[i];
-    else if (i > 0) d = samples[i] - samples[i - 1];
+    if (i + 1 < samples.size())
+      d = samples[i + 1] - samples[i];
+    else if (i > 0)
+      d = samples[i] - samples[i - 1];
     if (room_at(scene, samples[i]) < 0) continue;  // inside a door opening
     ScannerPose sp;
     sp.position_m = Eigen::Vector3d(samples[i].x(), samples[i].y(), p.sensor_height_m);

@@ -59,8 +59,8 @@ void walk(const TruthLayout& L, Grid<std::uint8_t>& seen, const Eigen::Vector3d&
 }  // namespace
 
 Grid<std::uint8_t> seen_cells(const TruthLayout& layout, const SimResult& sim, const Tilt& tilt,
-                              const std::vector<int>& scanner_storey, int storey,
-                              double floor_z_m, const SeenParams& params) {
+                              const std::vector<int>& scanner_storey, int storey, double floor_z_m,
+                              const SeenParams& params) {
   validate(params);
   Grid<std::uint8_t> seen(layout.geometry.width(), layout.geometry.height(), 0);
   const Eigen::Matrix3d Rt = tilt_rotation(tilt).transpose();  // tilted -> scene

@@ -18,8 +18,8 @@
 namespace indoormap::sim {
 
 struct Storey {
-  Scene scene;             ///< storey frame; its tilt is the building's
-  double floor_z_m = 0.0;  ///< scene frame
+  Scene scene;               ///< storey frame; its tilt is the building's
+  double floor_z_m = 0.0;    ///< scene frame
   double ceiling_z_m = 0.0;  ///< scene frame: the highest ceiling point of the storey
 };
 
@@ -28,8 +28,8 @@ struct Building {
 };
 
 struct BuildingParams {
-  RandomSceneParams random;      ///< the rooms of every storey
-  int storeys = 1;               ///< 1..20
+  RandomSceneParams random;       ///< the rooms of every storey
+  int storeys = 1;                ///< 1..20
   double slab_thickness_m = 0.3;  ///< from the highest ceiling of a storey to the next floor
   /// Every storey has the same rooms and furniture (storey 0's); else each storey draws its own
   /// layout (seed derived from the building's seed), with the building's yaw and tilt.
@@ -55,7 +55,7 @@ Building random_building(std::uint64_t seed, const BuildingParams& params = {});
 /// Which storey of the building a scan block belongs to (SimResult::scans[i].scanner indexes the
 /// building's scanners storey by storey).
 struct BuildingSim {
-  SimResult sim;                  ///< merged, tilted frame; scanners storey by storey
+  SimResult sim;                    ///< merged, tilted frame; scanners storey by storey
   std::vector<int> scanner_storey;  ///< per merged scanner
 };
 

@@ -33,8 +33,8 @@ SeenIou evaluate_seen_free(const GridGeometry& truth_geometry, const Mask& truth
                            const Mask& result_free);
 
 struct FaceScores {
-  int truth_faces = 0;   ///< truth wall cells with a 4-neighbour that is truth free
-  int result_walls = 0;  ///< result wall cells
+  int truth_faces = 0;                   ///< truth wall cells with a 4-neighbour that is truth free
+  int result_walls = 0;                  ///< result wall cells
   std::optional<double> face_recall;     ///< faces within one result cell of a result wall
   std::optional<double> wall_precision;  ///< result walls within one truth cell of a face
 };

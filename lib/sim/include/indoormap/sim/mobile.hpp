@@ -4,10 +4,9 @@
 // 16-beam-like share of the terrestrial scanner's rays. The path is planned on the truth free
 // space, kept clearance_m from walls and furniture: from the corridor's west end into every room
 // (nearest first, through its door) and back to the start.
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <vector>
-
-#include <Eigen/Geometry>
 
 #include "indoormap/sim/ground_truth.hpp"
 #include "indoormap/sim/scene.hpp"
@@ -16,11 +15,11 @@
 namespace indoormap::sim {
 
 struct MobileParams {
-  double step_m = 0.5;          ///< distance between positions along the path
+  double step_m = 0.5;  ///< distance between positions along the path
   /// Rays per position as a share of the terrestrial pattern (scene.scanner: 1440 x 401 rays at
   /// 0.25 deg). 0.06 with the default scanner: 16 beams x 2166 columns (0.17 deg), ~35 k rays.
   double ray_share = 0.06;
-  int beams = 16;               ///< rows of one column, spread over the elevation fan
+  int beams = 16;  ///< rows of one column, spread over the elevation fan
   double elevation_min_deg = -30.0;
   double elevation_max_deg = 30.0;
   double sensor_height_m = 1.0;  ///< above the storey floor
@@ -63,8 +62,8 @@ struct TrajectoryPose {
 
 /// The sensor poses of scanners (scene frame, z already including floor_z_m) in the tilted frame:
 /// position R * p, orientation Rz(heading) (the sensor's axes are the tilted frame's, turned to
-/// the heading, as its ray pattern is regular in that frame); timestamps from the path length at speed_m_s,
-/// starting at t0_s.
+/// the heading, as its ray pattern is regular in that frame); timestamps from the path length at
+/// speed_m_s, starting at t0_s.
 std::vector<TrajectoryPose> trajectory(const std::vector<ScannerPose>& scanners, const Tilt& tilt,
                                        double speed_m_s = 1.0, double t0_s = 0.0);
 
