@@ -3,12 +3,14 @@
 // the mobile path and its determinism.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "indoormap/core/errors.hpp"
 #include "indoormap/formats/tum_trajectory.hpp"
 #include "indoormap/sim/building.hpp"
+#include "indoormap/sim/floor_scene.hpp"
 #include "indoormap/sim/ground_truth.hpp"
 #include "indoormap/sim/mobile.hpp"
 #include "indoormap/sim/random_scene.hpp"
@@ -188,4 +190,28 @@ TEST(SimMobile, DeterministicAndTheTrajectoryReadsBack) {
     test::write_text(f, bad);
     EXPECT_THROW(formats::read_tum_trajectory(f), InputError) << bad;
   }
+}
+
+TEST(SimFloorScene, TwoStoreyMobileBuildingWithItsTruth) {
+  FloorSceneParams p;
+  p.building.random.rooms = 2;
+  p.building.storeys = 2;
+  p.mobile = true;
+  p.mobile_params.ray_share = 0.004;
+  const FloorScene f = simulate_floor_scene(3, p);
+  ASSERT_EQ(f.truths.size(), 2u);
+  ASSERT_EQ(f.paths.size(), 2u);
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_EQ(f.paths[k].rooms_visited, 2);
+    EXPECT_EQ(f.building.storeys[k].scene.scanners.size(), f.paths[k].poses.size());
+    // Most of the free space of each storey is seen by its own path.
+    const auto free = std::count(f.truths[k].layout.cells.data.begin(),
+                                 f.truths[k].layout.cells.data.end(), Cell::kFree);
+    EXPECT_GT(seen_count(f.truths[k].seen), 0.8 * free) << k;
+  }
+  EXPECT_EQ(f.sim.sim.scans.size(), f.paths[0].poses.size() + f.paths[1].poses.size());
+  // The sensor of storey 1 is 1 m above its floor, in the scene frame.
+  const Eigen::Matrix3d Rt = tilt_rotation(f.building.storeys[0].scene.tilt).transpose();
+  const Eigen::Vector3d last = Rt * f.sim.sim.scanner_positions_m.back();
+  EXPECT_NEAR(last.z(), f.building.storeys[1].floor_z_m + 1.0, 1e-9);
 }

@@ -212,20 +212,15 @@ sim::Building make_building(const Args& a, scene_sim::Config& config) {
 
 /// Mobile mode: every storey's scanners become the planned path's poses.
 void plan_paths(sim::Building& b, const scene_sim::Config& config, bool quiet) {
-  for (std::size_t k = 0; k < b.storeys.size(); ++k) {
-    sim::Scene& sc = b.storeys[k].scene;
-    const sim::TruthLayout L =
-        sim::truth_layout(sc, sim::build_geometry(sc), config.output.truth_cell_m);
-    const sim::MobilePath path = sim::plan_mobile_path(sc, L, config.mobile_params);
-    if (path.poses.empty())
-      throw InputError("<mobile path>", "storey " + std::to_string(k) + ": no path could be planned");
-    if (path.unreached > 0)
-      std::fprintf(stderr, "scene-sim: warning: storey %zu: the mobile path reaches no way into %d room(s)\n",
-                   k, path.unreached);
+  const auto paths = sim::plan_mobile_paths(b, config.mobile_params, config.output.truth_cell_m);
+  for (std::size_t k = 0; k < paths.size(); ++k) {
+    if (paths[k].unreached > 0)
+      std::fprintf(stderr,
+                   "scene-sim: warning: storey %zu: the mobile path finds no way into %d room(s)\n",
+                   k, paths[k].unreached);
     if (!quiet)
-      std::fprintf(stderr, "scene-sim: storey %zu: mobile path %.1f m, %zu positions, %d room(s)\n", k,
-                   path.length_m, path.poses.size(), path.rooms_visited);
-    sc.scanners = path.poses;
+      std::fprintf(stderr, "scene-sim: storey %zu: mobile path %.1f m, %zu positions, %d room(s)\n",
+                   k, paths[k].length_m, paths[k].poses.size(), paths[k].rooms_visited);
   }
 }
 
@@ -273,7 +268,6 @@ int run(int argc, char** argv) {
   if (config.mobile) plan_paths(building, config, a.quiet);
   sim::SimOptions sim_options;
   sim_options.sector_deg = config.sector_deg;
-  std::vector<sim::SimResult> parts;
   for (const auto& st : building.storeys) {
     const sim::Scene& scene = st.scene;
     if (!a.quiet)
@@ -283,10 +277,9 @@ int run(int argc, char** argv) {
           scene.name.c_str(), scene.rooms.size(), scene.furniture.size(), scene.scanners.size(),
           static_cast<unsigned long long>(config.mobile ? sim::mobile_ray_count(scene, config.mobile_params)
                                                         : sim::ray_count(scene)));
-    parts.push_back(config.mobile ? sim::simulate_mobile(scene, config.mobile_params, sim_options)
-                                  : sim::simulate(scene, sim_options));
   }
-  const sim::BuildingSim bsim = sim::merge_storeys(building, std::move(parts));
+  const sim::BuildingSim bsim =
+      sim::simulate_storeys(building, sim_options, config.mobile ? &config.mobile_params : nullptr);
   const sim::SimResult& result = bsim.sim;
   const auto t1 = std::chrono::steady_clock::now();
   if (result.points.empty()) {
@@ -295,7 +288,7 @@ int run(int argc, char** argv) {
     return static_cast<int>(ExitCode::kNoResult);
   }
   const auto truths =
-      scene_sim::storey_truths(building, bsim, config.output.truth_cell_m, config.seen);
+      sim::storey_truths(building, bsim, config.output.truth_cell_m, config.seen);
   sim::OutputOptions out_options = config.output;
   app::OutputSet set(a.out_dir, "scene-sim");  // all or nothing: docs/scene-sim.md, "Outputs"
   const auto written = scene_sim::write_building_outputs(

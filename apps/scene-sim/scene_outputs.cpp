@@ -71,21 +71,6 @@ nlohmann::ordered_json write_storey(const fs::path& dir, const std::string& sub,
 
 }  // namespace
 
-std::vector<StoreyTruth> storey_truths(const Building& building, const BuildingSim& sim,
-                                       double truth_cell_m, const SeenParams& seen) {
-  std::vector<StoreyTruth> out;
-  const Tilt tilt = building.storeys.front().scene.tilt;
-  for (std::size_t k = 0; k < building.storeys.size(); ++k) {
-    const Storey& st = building.storeys[k];
-    StoreyTruth t;
-    t.layout = truth_layout(st.scene, build_geometry(st.scene), truth_cell_m);
-    t.seen = seen_cells(t.layout, sim.sim, tilt, sim.scanner_storey, static_cast<int>(k),
-                        st.floor_z_m, seen);
-    out.push_back(std::move(t));
-  }
-  return out;
-}
-
 WrittenOutputs write_building_outputs(const fs::path& dir, const Building& building,
                                       const BuildingSim& bsim,
                                       const std::vector<StoreyTruth>& truths,

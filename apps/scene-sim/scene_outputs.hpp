@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "indoormap/sim/building.hpp"
+#include "indoormap/sim/floor_scene.hpp"
 #include "indoormap/sim/ground_truth.hpp"
 #include "indoormap/sim/mobile.hpp"
 #include "indoormap/sim/output.hpp"
@@ -16,15 +17,7 @@
 
 namespace indoormap::scene_sim {
 
-/// Per storey: the truth layout and the seen mask (computed before anything is written).
-struct StoreyTruth {
-  sim::TruthLayout layout;
-  Grid<std::uint8_t> seen;
-};
-
-/// The truth of every storey of a simulated building (sim: its merged simulation).
-std::vector<StoreyTruth> storey_truths(const sim::Building& building, const sim::BuildingSim& sim,
-                                       double truth_cell_m, const sim::SeenParams& seen = {});
+using sim::StoreyTruth;
 
 /// What write_building_outputs wrote (file names relative to the output directory).
 struct WrittenOutputs {
