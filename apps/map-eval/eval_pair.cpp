@@ -199,15 +199,18 @@ PairReport evaluate_pair(const formats::TruthFile& truth, const fs::path& dir,
                          const PairParams& p) {
   PairReport out;
   ordered_json& report = out.json;
-  const Grid<Cell> truth_cells =
-      formats::read_layout_pgm(truth.layout_image, truth.layout_geometry);
   std::optional<ResultGrid> layout, map;
-  // Layout.
+  // Layout (the result's file is read first: its problems are reported before the truth's).
+  std::string source;
   if (fs::exists(dir / "layout.pgm")) {
     const Grid<std::uint8_t> raw = formats::read_pgm(dir / "layout.pgm");
-    std::string source;
     const GridGeometry rg = result_geometry(dir, raw, source);
     layout = ResultGrid{rg, formats::read_layout_pgm(dir / "layout.pgm", rg)};
+  }
+  const Grid<Cell> truth_cells =
+      formats::read_layout_pgm(truth.layout_image, truth.layout_geometry);
+  if (layout) {
+    const GridGeometry& rg = layout->geometry;
     ordered_json j = {{"status", "ok"}, {"file", "layout.pgm"}, {"geometry_from", source}};
     j.update(
         layout_json(sim::evaluate_layout(truth.layout_geometry, truth_cells, rg, layout->cells)));
