@@ -63,7 +63,8 @@ TEST(SimOutput, SceneSimWritesByteIdenticalFilesForASeed) {
     ++compared;
   }
   EXPECT_EQ(compared,
-            5 + 2 * 3 * 3);  // cloud, truth json, pgm, png, yaml; 3 positions x 3 sectors x 2
+            7 + 2 * 3 * 3);  // cloud, truth json, pgm, png, yaml, seen pgm + yaml; 3 positions x
+                             // 3 sectors x 2
   EXPECT_NE(test::read_text(a / "cloud.pcd"), test::read_text(c / "cloud.pcd"));
 }
 

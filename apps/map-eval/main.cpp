@@ -4,6 +4,8 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <optional>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -11,14 +13,10 @@
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/formats/ground_truth_json.hpp"
-#include "indoormap/formats/objects_json.hpp"
-#include "indoormap/formats/pgm.hpp"
-#include "indoormap/formats/room_geojson.hpp"
-#include "indoormap/formats/ros_map.hpp"
 #include "indoormap/sim/eval.hpp"
 #include "indoormap/version.hpp"
+#include "eval_pair.hpp"
 #include "main_guard.hpp"
-#include "map_yaml.hpp"
 #include "output_set.hpp"
 
 namespace fs = std::filesystem;
@@ -28,105 +26,72 @@ using nlohmann::ordered_json;
 namespace {
 
 /// Every key of the config file (-c, config/map-eval.yaml), top-level keys.
-template <class F>
-void visit(sim::EvalParams& p, F&& f) {
-  f("", "min_object_iou", app::finite(p.min_object_iou));
-  f("", "objects_include_hanging", p.include_hanging);
-}
-
-/// Grid geometry of a result layout: layout.yaml if present, else map.yaml (same grid), read by
-/// the one map.yaml reader (app::read_map_yaml; the image it names is not opened).
-GridGeometry result_geometry(const fs::path& dir, const Grid<std::uint8_t>& image,
-                             std::string& source) {
-  fs::path yaml = dir / "layout.yaml";
-  if (!fs::exists(yaml)) yaml = dir / "map.yaml";
-  if (!fs::exists(yaml))
-    throw InputError(
-        (dir / "map.yaml").string(),
-        "missing: layout.pgm needs map.yaml (or layout.yaml) for its resolution and origin");
-  source = yaml.filename().string();
-  const formats::RosMapMeta meta = app::read_map_yaml(yaml);
-  if (meta.origin.z() != 0.0)
-    throw InputError(yaml.string(), "key 'origin': a rotated map (yaw != 0) is not supported");
-  return GridGeometry({meta.origin.x(), meta.origin.y()}, meta.resolution_m, image.width,
-                      image.height);
-}
-
 ordered_json opt(const std::optional<double>& v) {
   return v ? ordered_json(*v) : ordered_json(nullptr);
 }
 
-ordered_json layout_json(const sim::LayoutScores& s) {
-  ordered_json j;
-  ordered_json classes;
-  for (int k = 0; k < 4; ++k) {
-    const auto& c = s.classes[k];
-    classes[std::string(to_string(static_cast<Cell>(k)))] = {{"iou", opt(c.iou)},
-                                                             {"intersection_m2", c.intersection_m2},
-                                                             {"union_m2", c.union_m2},
-                                                             {"truth_m2", c.truth_m2},
-                                                             {"result_m2", c.result_m2}};
-  }
-  j["classes"] = classes;
-  j["mean_iou"] = opt(s.mean_iou);
-  j["mean_iou_over"] = {"wall", "furniture", "free"};
-  j["accuracy"] = s.accuracy;
-  ordered_json conf;
-  for (int t = 0; t < 4; ++t) {
-    ordered_json row;
-    for (int r = 0; r < 4; ++r)
-      row[std::string(to_string(static_cast<Cell>(r)))] = s.confusion_m2[t][r];
-    conf[std::string(to_string(static_cast<Cell>(t)))] = row;
-  }
-  j["confusion_m2"] = conf;
-  j["confusion_rows"] = "truth class";
-  j["confusion_columns"] = "result class";
-  return j;
+template <class F>
+void visit(sim::EvalParams& p, F&& f) {
+  f("", "min_object_iou", app::finite(p.min_object_iou));
+  f("", "objects_include_hanging", p.include_hanging);
+  f("", "min_object_area_m2", app::finite(p.min_truth_area_m2));
 }
 
-ordered_json objects_json(const sim::ObjectScores& s) {
-  ordered_json j;
-  j["truth_count"] = s.truth_count;
-  j["result_count"] = s.result_count;
-  j["matched"] = s.matched;
-  j["recall"] = s.recall;
-  j["precision"] = s.precision;
-  j["mean_abs_z_max_error_m"] = opt(s.mean_abs_z_max_error_m);
-  j["mean_abs_z_min_error_m"] = opt(s.mean_abs_z_min_error_m);
-  j["max_abs_height_error_m"] = opt(s.max_abs_height_error_m);
-  ordered_json m = ordered_json::array();
-  for (const auto& x : s.matches)
-    m.push_back({{"truth_id", x.truth_id},
-                 {"result_id", x.result_id},
-                 {"iou", x.iou},
-                 {"z_min_error_m", opt(x.z_min_error_m)},
-                 {"z_max_error_m", opt(x.z_max_error_m)}});
-  j["matches"] = m;
-  j["missed"] = s.missed;
-  j["spurious"] = s.spurious;
-  return j;
-}
-
-ordered_json rooms_json(const std::vector<sim::RoomMatch>& rooms) {
-  ordered_json a = ordered_json::array();
-  for (const auto& r : rooms) {
-    ordered_json j;
-    j["result_index"] = r.result_index;
-    if (r.truth_index < 0) {
-      j["truth_room"] = nullptr;
-      j["note"] = "overlaps no truth room";
-    } else {
-      j["truth_room"] = r.truth_name;
-      j["iou"] = r.iou;
-      j["hausdorff_m"] = r.hausdorff_m;
-      j["truth_area_m2"] = r.truth_area_m2;
-      j["result_area_m2"] = r.result_area_m2;
-      j["area_error_m2"] = r.area_error_m2;
-      j["area_error_rel"] = r.area_error_rel;
+/// Floor heights of the result's storeys from RESULT/summary.json ("storeys": [{"floor_z_m"}]),
+/// by storey_<k> directory; missing keys leave the list short (storeys then match by index).
+std::vector<std::optional<double>> result_floors(const fs::path& dir, int n) {
+  std::vector<std::optional<double>> out(n);
+  try {
+    std::ifstream in(dir / "summary.json");
+    if (!in) return out;
+    const auto j = nlohmann::json::parse(in, nullptr, false);
+    if (j.is_discarded() || !j.contains("storeys") || !j["storeys"].is_array()) return out;
+    for (std::size_t i = 0; i < j["storeys"].size() && static_cast<int>(i) < n; ++i) {
+      const auto& s = j["storeys"][i];
+      for (const char* key : {"floor_z_m", "floor_m", "floor"})
+        if (s.is_object() && s.contains(key) && s[key].is_number()) {
+          out[i] = s[key].get<double>();
+          break;
+        }
     }
-    a.push_back(j);
+  } catch (const std::exception&) {
   }
-  return a;
+  return out;
+}
+
+/// Per-storey evaluation: truth storey k against the result's storey_<m> whose floor is nearest
+/// (within 1 m); without result floors, storey_<k> against truth storey k.
+ordered_json storeys_json(const formats::TruthFile& truth, const fs::path& dir,
+                          const map_eval::PairParams& p, int& evaluated) {
+  int n_result = 0;
+  while (fs::is_directory(dir / ("storey_" + std::to_string(n_result)))) ++n_result;
+  const auto floors = result_floors(dir, n_result);
+  ordered_json list = ordered_json::array();
+  for (const auto& ts : truth.storeys) {
+    int match = -1;
+    double best = 1.0;
+    for (int m = 0; m < n_result; ++m)
+      if (floors[m] && std::abs(*floors[m] - ts.floor_z_m) <= best) best = std::abs(*floors[m] - ts.floor_z_m), match = m;
+    const bool by_index = match < 0 && ts.k < n_result && !floors[ts.k];
+    if (by_index) match = ts.k;
+    ordered_json j = {{"k", ts.k}, {"truth_floor_z_m", ts.floor_z_m}, {"truth_ceiling_z_m", ts.ceiling_z_m}};
+    if (match < 0) {
+      j["result"] = nullptr;
+      j["note"] = "no result storey with a floor within 1 m";
+      list.push_back(j);
+      continue;
+    }
+    j["result"] = "storey_" + std::to_string(match);
+    j["result_floor_z_m"] = opt(floors[match]);
+    j["floor_error_m"] = floors[match] ? ordered_json(*floors[match] - ts.floor_z_m) : ordered_json(nullptr);
+    if (by_index) j["note"] = "matched by index: the result's summary.json gives no floor heights";
+    const formats::TruthFile st = formats::read_truth_json(ts.ground_truth);
+    auto r = map_eval::evaluate_pair(st, dir / ("storey_" + std::to_string(match)), p);
+    evaluated += r.evaluated;
+    j.update(r.json);
+    list.push_back(j);
+  }
+  return list;
 }
 
 int run(int argc, char** argv) {
@@ -139,15 +104,17 @@ int run(int argc, char** argv) {
       "  map-eval --truth clouds/office/ground_truth.json --result out\n"
       "  map-eval --truth /tmp/scene7/ground_truth.json --result /tmp/scene7-out -o /tmp/eval7 "
       "--min-iou 0.4\n"
-      "Reads from RESULT: layout.pgm (+ layout.yaml or map.yaml), objects.json, room.geojson; each "
-      "missing file\n"
-      "is reported as \"missing\" in eval.json. Exit codes: 0 done, 2 bad usage or input, 3 "
+      "Reads from RESULT: layout.pgm (+ layout.yaml or map.yaml), objects.json, room.geojson, "
+      "map.pgm / map.yaml,\n"
+      "and storey_<k>/ for a multi-storey truth; each missing file is reported as \"missing\" "
+      "in eval.json. Exit codes: 0 done, 2 bad usage or input, 3 "
       "nothing to evaluate, 1 other.");
   std::string truth_file, result_dir, out_dir, config_file;
   sim::EvalParams p;
   bool print_config = false;
   double min_iou = -1;
   bool include_hanging = false;
+  double min_area = -1, robot_width = 0.4;
   app.add_option("--truth", truth_file, "ground_truth.json written by scene-sim");
   app.add_option("--result", result_dir, "Directory with the results to evaluate");
   app.add_option("-o,--out", out_dir, "Where to write eval.json (default: the result directory)");
@@ -155,6 +122,12 @@ int run(int argc, char** argv) {
                  "Config file (YAML; keys min_object_iou, objects_include_hanging)");
   app.add_option("--min-iou", min_iou, "Footprint IoU needed to match an object (default 0.5)")
       ->check(CLI::Range(0.01, 1.0));
+  app.add_option("--min-area", min_area,
+                 "Recall counts truth objects of at least this area, m^2 (default 0.1)")
+      ->check(CLI::Range(0.0, 100.0));
+  app.add_option("--robot-width-m", robot_width,
+                 "Robot diameter for the door and reachability metrics (default 0.4)")
+      ->check(CLI::Range(0.01, 5.0));
   app.add_flag("--include-hanging", include_hanging, "Also count ceiling lamps as objects to find");
   app.add_flag("--print-config", print_config, "Print the effective parameters as YAML and exit");
   try {
@@ -166,6 +139,7 @@ int run(int argc, char** argv) {
   if (!config_file.empty()) app::read_config_file(config_file, [&](auto&& f) { visit(p, f); });
   if (min_iou > 0) p.min_object_iou = min_iou;
   if (include_hanging) p.include_hanging = true;
+  if (min_area >= 0) p.min_truth_area_m2 = min_area;
   sim::validate(p);
   if (print_config) {
     std::cout << app::config_to_yaml([&](auto&& f) { visit(p, f); });
@@ -186,48 +160,14 @@ int run(int argc, char** argv) {
   report["result"] = result_dir;
   report["parameters"] = {{"min_object_iou", p.min_object_iou},
                           {"objects_include_hanging", p.include_hanging}};
-  std::vector<std::string> missing;
-  int evaluated = 0;
-
-  // Layout.
-  if (fs::exists(dir / "layout.pgm")) {
-    const Grid<std::uint8_t> raw = formats::read_pgm(dir / "layout.pgm");
-    std::string source;
-    const GridGeometry rg = result_geometry(dir, raw, source);
-    const Grid<Cell> result = formats::read_layout_pgm(dir / "layout.pgm", rg);
-    const Grid<Cell> truth_cells =
-        formats::read_layout_pgm(truth.layout_image, truth.layout_geometry);
-    ordered_json j = {{"status", "ok"}, {"file", "layout.pgm"}, {"geometry_from", source}};
-    j.update(layout_json(sim::evaluate_layout(truth.layout_geometry, truth_cells, rg, result)));
-    report["layout"] = j;
-    ++evaluated;
-  } else {
-    report["layout"] = {{"status", "missing"}, {"file", "layout.pgm"}};
-    missing.push_back("layout.pgm");
-  }
-  // Objects.
-  if (fs::exists(dir / "objects.json")) {
-    // Without --include-hanging both sides are what stands on the floor (sim::evaluate_objects).
-    const auto objects = formats::read_objects_json(dir / "objects.json");
-    ordered_json j = {{"status", "ok"}, {"file", "objects.json"}};
-    j.update(objects_json(sim::evaluate_objects(truth.furniture, objects, p)));
-    report["objects"] = j;
-    ++evaluated;
-  } else {
-    report["objects"] = {{"status", "missing"}, {"file", "objects.json"}};
-    missing.push_back("objects.json");
-  }
-  // Room polygons.
-  if (fs::exists(dir / "room.geojson")) {
-    const auto rooms = formats::read_room_geojson(dir / "room.geojson");
-    ordered_json j = {{"status", rooms.empty() ? "empty" : "ok"}, {"file", "room.geojson"}};
-    j["rooms"] = rooms_json(sim::evaluate_rooms(truth.rooms, rooms));
-    report["room"] = j;
-    ++evaluated;
-  } else {
-    report["room"] = {{"status", "missing"}, {"file", "room.geojson"}};
-    missing.push_back("room.geojson");
-  }
+  report["parameters"]["min_object_area_m2"] = p.min_truth_area_m2;
+  report["parameters"]["robot_width_m"] = robot_width;
+  const map_eval::PairParams pp{p, robot_width};
+  auto pair = map_eval::evaluate_pair(truth, dir, pp);
+  int evaluated = pair.evaluated;
+  const std::vector<std::string> missing = pair.missing;
+  report.update(pair.json);
+  if (!truth.storeys.empty()) report["storeys"] = storeys_json(truth, dir, pp, evaluated);
   report["missing"] = missing;
   {
     app::OutputSet set(out_dir, "map-eval");  // all or nothing: docs/map-eval.md, "Outputs"

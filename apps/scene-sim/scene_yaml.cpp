@@ -85,6 +85,20 @@ void visit(Config& c, F&& f) {
   f("random", "l_shape_probability", app::finite(c.random.l_shape_probability));
   f("random", "sloped_ceiling_probability", app::finite(c.random.sloped_ceiling_probability));
   f("random", "scanner_in_corridor", c.random.scanner_in_corridor);
+  f("building", "storeys", c.storeys);
+  f("building", "slab_thickness_m", app::finite(c.slab_thickness_m));
+  f("building", "same_footprint", c.same_footprint);
+  f("mobile", "enabled", c.mobile);
+  f("mobile", "step_m", app::finite(c.mobile_params.step_m));
+  f("mobile", "ray_share", app::finite(c.mobile_params.ray_share));
+  f("mobile", "beams", c.mobile_params.beams);
+  f("mobile", "elevation_min_deg", app::finite(c.mobile_params.elevation_min_deg));
+  f("mobile", "elevation_max_deg", app::finite(c.mobile_params.elevation_max_deg));
+  f("mobile", "sensor_height_m", app::finite(c.mobile_params.sensor_height_m));
+  f("mobile", "clearance_m", app::finite(c.mobile_params.clearance_m));
+  f("mobile", "speed_m_s", app::finite(c.mobile_params.speed_m_s));
+  f("seen", "min_height_m", app::finite(c.seen.min_height_m));
+  f("seen", "max_height_m", app::finite(c.seen.max_height_m));
 }
 
 void read_scanner(Reader& rd, const YAML::Node& n, sim::ScannerParams& s) {

@@ -6,7 +6,9 @@
 #include <string>
 
 #include "indoormap/sim/output.hpp"
+#include "indoormap/sim/mobile.hpp"
 #include "indoormap/sim/random_scene.hpp"
+#include "indoormap/sim/seen.hpp"
 #include "indoormap/sim/scene.hpp"
 #include "indoormap/sim/simulate.hpp"
 
@@ -18,6 +20,12 @@ struct Config {
   sim::OutputOptions output;
   double sector_deg = 0.0;
   sim::RandomSceneParams random;
+  int storeys = 1;  ///< building: storeys stacked on slabs (scene file: copies of the scene)
+  double slab_thickness_m = 0.3;
+  bool same_footprint = false;  ///< random building: every storey has storey 0's rooms
+  bool mobile = false;          ///< mobile-scanner mode (sim/mobile.hpp)
+  sim::MobileParams mobile_params;
+  sim::SeenParams seen;
 };
 
 /// Applies a config file (sections scanner, output, random) on top of config.

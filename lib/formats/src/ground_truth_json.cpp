@@ -83,6 +83,52 @@ ordered_json rooms_json(const Scene& scene, double* wall_height) {
   return rooms;
 }
 
+/// rooms[i].doors (optional): the opening segment and the outward normal of the host edge.
+void read_doors(const json& room, const sim::TruthRoom& r, const fs::path& path,
+                const std::string& key, std::vector<sim::TruthDoor>& out) {
+  if (!room.contains("doors") || !room["doors"].is_array()) return;
+  const double t = room.contains("wall_thickness_m")
+                       ? number(room["wall_thickness_m"], path, key + ".wall_thickness_m")
+                       : 0.2;
+  const double orient = signed_area(r.polygon) >= 0 ? 1.0 : -1.0;
+  for (std::size_t j = 0; j < room["doors"].size(); ++j) {
+    const std::string k = key + ".doors[" + std::to_string(j) + "]";
+    const json& seg = member(room["doors"][j], "segment", path, k);
+    if (!seg.is_array() || seg.size() != 2) bad(path, k + ".segment", "expected two points");
+    sim::TruthDoor d;
+    d.id = r.name + ".door" + std::to_string(j);
+    d.a = point(seg[0], path, k + ".segment[0]");
+    d.b = point(seg[1], path, k + ".segment[1]");
+    if ((d.b - d.a).norm() <= 0) bad(path, k + ".segment", "has no length");
+    const Eigen::Vector2d u = (d.b - d.a).normalized();
+    d.outward = orient * Eigen::Vector2d(u.y(), -u.x());
+    d.wall_thickness_m = t;
+    out.push_back(d);
+  }
+}
+
+/// The optional scanners and storeys lists.
+void read_floor_keys(const json& j, const fs::path& path, TruthFile& t) {
+  if (j.contains("scanners") && j["scanners"].is_array())
+    for (std::size_t i = 0; i < j["scanners"].size(); ++i) {
+      const std::string k = "scanners[" + std::to_string(i) + "]";
+      t.scanners_xy_m.push_back(point(member(j["scanners"][i], "position_m", path, k), path, k + ".position_m"));
+    }
+  if (!j.contains("storeys") || !j["storeys"].is_array()) return;
+  for (std::size_t i = 0; i < j["storeys"].size(); ++i) {
+    const std::string k = "storeys[" + std::to_string(i) + "]";
+    const json& s = j["storeys"][i];
+    TruthFile::Storey st;
+    st.k = static_cast<int>(i);
+    st.floor_z_m = number(member(s, "floor_z_m", path, k), path, k + ".floor_z_m");
+    st.ceiling_z_m = number(member(s, "ceiling_z_m", path, k), path, k + ".ceiling_z_m");
+    const json& g = member(s, "ground_truth", path, k);
+    if (!g.is_string()) bad(path, k + ".ground_truth", "expected a file name");
+    st.ground_truth = path.parent_path() / g.get<std::string>();
+    t.storeys.push_back(st);
+  }
+}
+
 TruthFile read_truth_json_unguarded(const fs::path& path) {
   const json j = parse_json_file(path);
   TruthFile t;
@@ -99,6 +145,7 @@ TruthFile read_truth_json_unguarded(const fs::path& path) {
     r.name = rooms[i].value("name", key);
     r.kind = rooms[i].value("kind", "room");
     r.polygon = polygon(member(rooms[i], "polygon", path, key), path, key + ".polygon");
+    read_doors(rooms[i], r, path, key, t.doors);
     t.rooms.push_back(std::move(r));
   }
   const json& furniture = member(j, "furniture", path, "");
@@ -128,6 +175,7 @@ TruthFile read_truth_json_unguarded(const fs::path& path) {
   if (!(res > 0) || w < 1 || h < 1 || w * h > 4e8)
     bad(path, "layout", "resolution / width / height out of range");
   t.layout_geometry = GridGeometry(o, res, static_cast<int>(w), static_cast<int>(h));
+  read_floor_keys(j, path, t);
   return t;
 }
 

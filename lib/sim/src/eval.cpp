@@ -174,6 +174,8 @@ ObjectScores evaluate_objects(const std::vector<EvalObject>& truth,
 void validate(const EvalParams& params) {
   if (!(params.min_object_iou > 0 && params.min_object_iou <= 1))
     throw UsageError("invalid parameter min_object_iou: must be in (0, 1]");
+  if (!(params.min_truth_area_m2 >= 0 && params.min_truth_area_m2 <= 100))
+    throw UsageError("invalid parameter min_object_area_m2: must be in [0, 100] m^2");
 }
 
 ObjectScores evaluate_objects(const std::vector<EvalObject>& truth, std::vector<EvalObject> result,
@@ -186,7 +188,23 @@ ObjectScores evaluate_objects(const std::vector<EvalObject>& truth, std::vector<
   // "hanging" or "lamp" are left out as the truth's lamps are.
   if (!params.include_hanging)
     std::erase_if(result, [](const EvalObject& o) { return !o.on_floor; });
-  return evaluate_objects(expected, result, params.min_object_iou);
+  ObjectScores s = evaluate_objects(expected, result, params.min_object_iou);
+  s.matched_all = s.matched;
+  std::vector<std::string> small;
+  for (const auto& f : expected)
+    if (std::abs(signed_area(f.footprint)) < params.min_truth_area_m2) small.push_back(f.id);
+  if (small.empty()) return s;
+  auto is_small = [&](const std::string& id) {
+    return std::find(small.begin(), small.end(), id) != small.end();
+  };
+  s.truth_below_min_area = static_cast<int>(small.size());
+  s.truth_count -= s.truth_below_min_area;
+  s.matched = static_cast<int>(std::count_if(s.matches.begin(), s.matches.end(),
+                                             [&](const ObjectMatch& m) { return !is_small(m.truth_id); }));
+  std::erase_if(s.missed, is_small);
+  s.recall = s.truth_count > 0 ? static_cast<double>(s.matched) / s.truth_count : 0.0;
+  s.precision = s.result_count > 0 ? static_cast<double>(s.matched_all) / s.result_count : 0.0;
+  return s;
 }
 
 std::vector<RoomMatch> evaluate_rooms(const std::vector<TruthRoom>& truth,

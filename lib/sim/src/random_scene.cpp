@@ -319,7 +319,8 @@ Scene random_scene(std::uint64_t seed, const RandomSceneParams& p) {
     scene.scanners.push_back(sp);
   }
   // Rotate the whole building.
-  const double yaw = rng.uniform(-p.max_yaw_deg, p.max_yaw_deg) * kDeg;
+  const double drawn_yaw = rng.uniform(-p.max_yaw_deg, p.max_yaw_deg) * kDeg;
+  const double yaw = p.yaw_deg ? *p.yaw_deg * kDeg : drawn_yaw;
   for (auto& room : scene.rooms) {
     for (auto& v : room.polygon) v = rotate(v, yaw);
     if (room.ceiling.slope_deg > 0) room.ceiling.rise_azimuth_deg += yaw / kDeg;
@@ -337,6 +338,15 @@ Scene random_scene(std::uint64_t seed, const RandomSceneParams& p) {
   scene.tilt.roll_deg = tilt * std::cos(dir);
   scene.tilt.pitch_deg = tilt * std::sin(dir);
   return normalised(scene);
+}
+
+std::optional<double> random_scene_yaw_deg(const Scene& scene) {
+  for (const Room& room : scene.rooms) {
+    if (room.kind != RoomKind::kCorridor || room.polygon.size() < 2) continue;
+    const V2 d = room.polygon[1] - room.polygon[0];
+    return std::atan2(d.y(), d.x()) / kDeg;
+  }
+  return std::nullopt;
 }
 
 }  // namespace indoormap::sim

@@ -6,6 +6,7 @@
 
 #include "indoormap/core/errors.hpp"
 #include "indoormap/sim/world.hpp"
+#include "simulate_detail.hpp"
 
 namespace indoormap::sim {
 
@@ -73,11 +74,11 @@ std::uint64_t ray_count(const Scene& scene) {
          static_cast<std::uint64_t>(elevation_count(scene.scanner)) * scene.scanners.size();
 }
 
-SimResult simulate(const Scene& input, const SimOptions& options) {
-  require_valid(input);
-  const Scene scene = normalised(input);
+namespace detail {
+
+SimResult simulate_pattern(const Scene& scene, const SimOptions& options, std::uint64_t rays,
+                           const PatternFn& pattern) {
   const ScannerParams& sp = scene.scanner;
-  const std::uint64_t rays = ray_count(scene);
   if (rays > options.max_rays)
     throw BudgetError("scene: " + std::to_string(rays) + " rays exceed the budget of " +
                       std::to_string(options.max_rays) + " (coarser scanner.azimuth_step_deg / elevation_step_deg?)");
@@ -86,13 +87,6 @@ SimResult simulate(const Scene& input, const SimOptions& options) {
   RayCaster caster(geometry);
   const Eigen::Matrix3d R = tilt_rotation(scene.tilt);  // scene -> tilted
   const Eigen::Matrix3d Rt = R.transpose();
-  const int n_az = azimuth_count(sp), n_el = elevation_count(sp);
-  std::vector<double> cos_el(n_el), sin_el(n_el);
-  for (int j = 0; j < n_el; ++j) {
-    const double el = (sp.elevation_min_deg + j * sp.elevation_step_deg) * kDeg;
-    cos_el[j] = std::cos(el);
-    sin_el[j] = std::sin(el);
-  }
   const double sector = options.sector_deg > 0 && options.sector_deg < 360 ? options.sector_deg : 360.0;
   const int n_sectors = static_cast<int>(std::ceil(360.0 / sector - 1e-9));
 
@@ -101,16 +95,26 @@ SimResult simulate(const Scene& input, const SimOptions& options) {
   out.points.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(rays, 50'000'000)));
   Rng rng(scene.seed);
   constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
-  std::vector<double> prev_col(n_el, kNone), cur_col(n_el, kNone);
+  std::vector<double> prev_col, cur_col, cos_el, sin_el;
 
   for (std::size_t s = 0; s < scene.scanners.size(); ++s) {
+    const RayPattern pat = pattern(s);
+    const int n_az = pat.azimuths, n_el = static_cast<int>(pat.elevation_deg.size());
+    cos_el.resize(n_el);
+    sin_el.resize(n_el);
+    for (int j = 0; j < n_el; ++j) {
+      const double el = pat.elevation_deg[j] * kDeg;
+      cos_el[j] = std::cos(el);
+      sin_el[j] = std::sin(el);
+    }
+    prev_col.assign(n_el, kNone);
+    cur_col.assign(n_el, kNone);
     const Eigen::Vector3d origin = scene.scanners[s].position_m;
     const Eigen::Vector3d origin_tilted = R * origin;
     out.scanner_positions_m.push_back(origin_tilted);
-    std::fill(prev_col.begin(), prev_col.end(), kNone);
     int sector_index = -1;
     for (int i = 0; i < n_az; ++i) {
-      const double az_rel = i * sp.azimuth_step_deg;
+      const double az_rel = i * pat.azimuth_step_deg;
       const int sec = std::min(n_sectors - 1, static_cast<int>(az_rel / sector));
       if (sec != sector_index) {
         if (!out.scans.empty()) out.scans.back().end = out.points.size();
@@ -123,7 +127,7 @@ SimResult simulate(const Scene& input, const SimOptions& options) {
         out.scans.push_back(b);
         sector_index = sec;
       }
-      const double az = (scene.scanners[s].heading_deg + az_rel) * kDeg;
+      const double az = (scene.scanners[s].heading_deg + pat.azimuth_offset_deg + az_rel) * kDeg;
       const double ca = std::cos(az), sa = std::sin(az);
       double above = kNone;  // true range of the previous ray in this column
       for (int j = 0; j < n_el; ++j) {
@@ -160,6 +164,20 @@ SimResult simulate(const Scene& input, const SimOptions& options) {
   }
   out.returns = out.points.size();
   return out;
+}
+
+}  // namespace detail
+
+SimResult simulate(const Scene& input, const SimOptions& options) {
+  require_valid(input);
+  const Scene scene = normalised(input);
+  const ScannerParams& sp = scene.scanner;
+  detail::RayPattern pat;
+  pat.azimuths = azimuth_count(sp);
+  pat.azimuth_step_deg = sp.azimuth_step_deg;
+  const int n_el = elevation_count(sp);
+  for (int j = 0; j < n_el; ++j) pat.elevation_deg.push_back(sp.elevation_min_deg + j * sp.elevation_step_deg);
+  return detail::simulate_pattern(scene, options, ray_count(scene), [&](std::size_t) { return pat; });
 }
 
 }  // namespace indoormap::sim

@@ -9,6 +9,7 @@
 
 #include "indoormap/core/grid.hpp"
 #include "indoormap/sim/eval.hpp"
+#include "indoormap/sim/floor_eval.hpp"
 #include "indoormap/sim/ground_truth.hpp"
 #include "indoormap/sim/scene.hpp"
 #include "indoormap/sim/simulate.hpp"
@@ -38,6 +39,15 @@ struct TruthFile {
   std::vector<sim::EvalObject> furniture;
   std::filesystem::path layout_image;  ///< resolved against the JSON's directory
   GridGeometry layout_geometry;
+  /// Optional in the file (older ground truths have none of these):
+  std::vector<sim::TruthDoor> doors;            ///< rooms[].doors[] (id "<room>.door<j>")
+  std::vector<Eigen::Vector2d> scanners_xy_m;  ///< scanners[].position_m, scene frame
+  struct Storey {
+    int k = 0;
+    double floor_z_m = 0.0, ceiling_z_m = 0.0;
+    std::filesystem::path ground_truth;  ///< resolved; the storey's own ground_truth.json
+  };
+  std::vector<Storey> storeys;  ///< "storeys" (scene-sim --storeys S > 1)
 };
 
 /// Reads ground_truth.json (as written by scene-sim). Throws InputError naming the file and key.

@@ -62,6 +62,8 @@ struct ObjectScores {
   std::vector<ObjectMatch> matches;
   std::vector<std::string> missed;  ///< truth ids without a match
   std::vector<std::string> spurious;  ///< result ids without a match
+  int truth_below_min_area = 0;  ///< truth items left out of truth_count (EvalParams)
+  int matched_all = 0;           ///< matches including those of items below the minimum area
   std::optional<double> mean_abs_z_max_error_m, mean_abs_z_min_error_m, max_abs_height_error_m;
 };
 
@@ -75,6 +77,10 @@ ObjectScores evaluate_objects(const std::vector<EvalObject>& truth, const std::v
 struct EvalParams {
   double min_object_iou = 0.5;  ///< footprint IoU needed to match a result object with a truth item
   bool include_hanging = false;  ///< also expect lamps (not standing on the floor) as objects
+  /// Recall counts truth items of at least this footprint area (m^2); smaller items may still
+  /// be matched (a result object matching one is no false positive) but are not expected.
+  /// Precision counts every result object. 0: every item counts.
+  double min_truth_area_m2 = 0.1;
 };
 
 /// Throws UsageError unless min_object_iou is in (0, 1]. Called by evaluate_objects(..., params).
@@ -82,7 +88,8 @@ void validate(const EvalParams& params);
 
 /// The object scores map-eval reports: without include_hanging both sides are what stands on the
 /// floor (truth items with on_floor, result objects not of kind hanging / lamp); matched with
-/// params.min_object_iou. Throws UsageError for invalid params (validate).
+/// params.min_object_iou; recall over the truth items of at least min_truth_area_m2 (matched
+/// = their matches), precision = matched_all / result_count. Throws UsageError for invalid params (validate).
 ObjectScores evaluate_objects(const std::vector<EvalObject>& truth, std::vector<EvalObject> result,
                               const EvalParams& params);
 
