@@ -8,6 +8,7 @@
 // Results: docs/benchmarks.md ("Routes on building maps").
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>

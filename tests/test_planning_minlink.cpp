@@ -217,3 +217,17 @@ TEST(MinLink, DefaultPlannerAndConfigKey) {
   none.search = RouteSearch::kPaper;
   EXPECT_THROW(validate(none), UsageError);
 }
+
+TEST(MinLink, FarApartCellsAreTheDoubleSweepsEnds) {
+  // A wall at column 40 splits a walled 60 x 10 map; d_save one cell. The larger room's safe
+  // cells are columns 2..38, rows 2..7. From its first cell (2,2) the farthest in wave steps are
+  // column 38 (36 steps; lowest index (38,2)), and from there column 2 ((2,2)).
+  auto m = walled(60, 10);
+  for (int r = 0; r < 10; ++r) m.at(40, r) = Cell::kWall;
+  const auto safe = safe_zone(m, make_disk_template(0.1, 0.1));
+  const auto far = far_apart_cells(safe);
+  ASSERT_TRUE(far);
+  EXPECT_EQ(far->first, (CellIndex{38, 2}));
+  EXPECT_EQ(far->second, (CellIndex{2, 2}));
+  EXPECT_FALSE(far_apart_cells(Grid<SafeCell>(5, 5, SafeCell::kUnsafe)));
+}
