@@ -87,7 +87,7 @@ void BM_Region(benchmark::State& st) {
 void BM_Scenario(benchmark::State& st) {
   const auto& s = scene(static_cast<int>(st.range(0)));
   PlannerParams p = kParams;
-  p.exact_search = st.range(1) != 0;
+  p.search = st.range(1) != 0 ? RouteSearch::kExact : RouteSearch::kPaper;
   const auto tmpl = make_templates(kRobot, p, 0.05);
   const auto safe = safe_zone(s.layout, tmpl.disk);
   for (auto _ : st) benchmark::DoNotOptimize(plan_routes(safe, s.geo, s.start, s.goal, tmpl, p));

@@ -192,7 +192,7 @@ TEST(Planning, RandomMapsOptimalAndSafe) {
   const RobotParams robot{0.2, 0.2, 0.0};  // d_save 0.1 m = one cell
   const auto tmpl = make_templates(robot, p, cell_m);
   PlannerParams paper_only = p;
-  paper_only.exact_search = false;
+  paper_only.search = RouteSearch::kPaper;
   int maps = 0, with_route = 0, paper_worse = 0, paper_none = 0, no_route = 0, multi = 0;
   while (maps < 200) {
     const auto m = random_map(rng, cell_m);
@@ -250,7 +250,7 @@ TEST(Planning, PaperRulesOnHandMaps) {
   PlannerParams p;
   p.d_min_m = 0.3;
   p.d_max_m = 3.0;
-  p.exact_search = false;
+  p.search = RouteSearch::kPaper;
   const RobotParams robot{0.2, 0.2, 0.0};
   const auto tmpl = make_templates(robot, p, cell_m);
   Grid<Cell> open(30, 30, Cell::kFree);
@@ -273,7 +273,7 @@ TEST(Planning, PaperRulesOnHandMaps) {
   // exact search finds the two-move route (right, then up).
   EXPECT_LE(res.routes.front().moves, 3);
   EXPECT_EQ(check_route(res.routes.front(), safe2, geo, {4, 4}, {24, 25}, p), "");
-  p.exact_search = true;
+  p.search = RouteSearch::kExact;
   res =
       plan_routes(safe2, geo, {geo.center_of({4, 4}), 0.0}, {geo.center_of({24, 25}), {}}, tmpl, p);
   ASSERT_FALSE(res.routes.empty());

@@ -5,9 +5,28 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "config_reader.hpp"
 #include "indoormap/planning/planner.hpp"
 
 namespace indoormap::app {
+
+/// planner.search: "min_link", "exact" or "paper".
+template <>
+struct ConfigValue<planning::RouteSearch> {
+  static void read(const ConfigReader& rd, const YAML::Node& n, const std::string& key,
+                   planning::RouteSearch& v) {
+    const auto s = rd.text(n, key);
+    const auto kind = planning::route_search_from(s);
+    if (!kind) rd.fail(n, key, "expected 'min_link', 'exact' or 'paper', got '" + s + "'");
+    v = *kind;
+  }
+  static void emit(YAML::Emitter& out, planning::RouteSearch v) {
+    out << std::string(planning::to_string(v));
+  }
+  static nlohmann::json json(planning::RouteSearch v) {
+    return std::string(planning::to_string(v));
+  }
+};
 
 struct PlanConfig {
   planning::RobotParams robot;
@@ -25,7 +44,7 @@ void visit_plan(C& c, F&& f) {
   f("planner", "d_min_m", c.planner.d_min_m);
   f("planner", "d_max_m", c.planner.d_max_m);
   f("planner", "paper_rules", c.planner.paper_rules);
-  f("planner", "exact_search", c.planner.exact_search);
+  f("planner", "search", c.planner.search);
   f("planner", "max_routes", c.planner.max_routes);
   f("planner", "extra_moves", c.planner.extra_moves);
   f("planner", "max_nodes", c.planner.max_nodes);

@@ -255,7 +255,7 @@ put("plan_config", "nan_inf_1e38.yaml", "robot:\n  width_m: .nan\n  length_m: .i
 put("plan_config", "int_inf.yaml", "planner:\n  max_nodes: .inf\n  extra_moves: -.inf\n")
 put("plan_config", "huge_ints.yaml", "planner:\n  max_nodes: 9223372036854775808\n  max_routes: -5\n  extra_moves: 1e30\n")
 put("plan_config", "int_fraction.yaml", "planner:\n  max_routes: 2.5\n  max_nodes: 1e5\n")
-put("plan_config", "both_searches_off.yaml", "planner:\n  paper_rules: false\n  exact_search: false\n")
+put("plan_config", "both_searches_off.yaml", "planner:\n  paper_rules: false\n  search: paper\n")
 put("plan_config", "d_min_above_d_max.yaml", "planner:\n  d_min_m: 4\n  d_max_m: 3\n")
 put("plan_config", "not_mapping.yaml", "- robot\n- planner\n")
 put("plan_config", "section_scalar.yaml", "robot: 5\n")

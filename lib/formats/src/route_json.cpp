@@ -59,7 +59,7 @@ json route_json(const RouteReport& rep) {
         {"d_max_m", rep.params.d_max_m},
         {"cell_m", rep.geometry.cell_m()},
         {"paper_rules", rep.params.paper_rules},
-        {"exact_search", rep.params.exact_search},
+        {"search", planning::to_string(rep.params.search)},
         {"max_routes", rep.params.max_routes},
         {"extra_moves", rep.params.extra_moves},
         {"max_nodes", rep.params.max_nodes}}},

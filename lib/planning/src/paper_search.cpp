@@ -8,24 +8,6 @@ namespace indoormap::planning::detail {
 
 namespace {
 
-/// End point id of an offset, or -1 when it is not in the template.
-std::int32_t end_point_id(const NeighbourhoodTemplate& t, const std::vector<std::int32_t>& id_of,
-                          CellIndex off) {
-  const int r = t.radius_cells, side = 2 * r + 1;
-  if (std::abs(off.col) > r || std::abs(off.row) > r) return -1;
-  return id_of[static_cast<std::size_t>(off.row + r) * side + (off.col + r)];
-}
-
-std::vector<std::int32_t> offset_index(const NeighbourhoodTemplate& t) {
-  const int r = t.radius_cells, side = 2 * r + 1;
-  std::vector<std::int32_t> id_of(static_cast<std::size_t>(side) * side, -1);
-  for (std::size_t i = 0; i < t.end_points.size(); ++i) {
-    const auto& o = t.end_points[i].offset;
-    id_of[static_cast<std::size_t>(o.row + r) * side + (o.col + r)] = static_cast<std::int32_t>(i);
-  }
-  return id_of;
-}
-
 // Virgin 8-neighbours of every region cell (neighbours outside M_tb).
 Grid<std::uint8_t> virgin_counts(const Grid<std::uint8_t>& region) {
   const int w = region.width, h = region.height;

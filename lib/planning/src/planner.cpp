@@ -5,7 +5,6 @@
 #include <deque>
 #include <limits>
 #include <numbers>
-#include <queue>
 #include <sstream>
 
 #include "planner_internal.hpp"
@@ -47,19 +46,37 @@ std::string budget_message(const PlannerParams& p, const PlanResult& r) {
                                ? "planner.max_seconds " + fmt(p.max_seconds) + " s"
                                : "planner.max_nodes " + std::to_string(p.max_nodes) + " nodes";
   return what + " reached (" + std::to_string(r.paper_nodes) + " paper + " +
-         std::to_string(r.exact_nodes) +
-         " exact nodes expanded); raise planner.max_seconds / planner.max_nodes, or plan to a "
+         std::to_string(r.exact_nodes) + " " + to_string(p.search) +
+         " nodes expanded); raise planner.max_seconds / planner.max_nodes, or plan to a "
          "nearer goal";
 }
 
 }  // namespace
 
+const char* to_string(RouteSearch s) {
+  switch (s) {
+    case RouteSearch::kMinLink:
+      return "min_link";
+    case RouteSearch::kExact:
+      return "exact";
+    case RouteSearch::kPaper:
+      return "paper";
+  }
+  return "?";
+}
+
+std::optional<RouteSearch> route_search_from(const std::string& name) {
+  for (const auto s : {RouteSearch::kMinLink, RouteSearch::kExact, RouteSearch::kPaper})
+    if (name == to_string(s)) return s;
+  return std::nullopt;
+}
+
 void validate(const PlannerParams& p) {
   require(std::isfinite(p.d_max_m) && p.d_max_m > 0, "planner.d_max_m: must be > 0");
   require(std::isfinite(p.d_min_m) && p.d_min_m >= 0 && p.d_min_m <= p.d_max_m,
           "planner.d_min_m: must be in [0, planner.d_max_m]");
-  require(p.paper_rules || p.exact_search,
-          "planner: paper_rules and exact_search cannot both be false");
+  require(p.paper_rules || p.search != RouteSearch::kPaper,
+          "planner.search: 'paper' needs planner.paper_rules: true");
   require(p.max_routes >= 1 && p.max_routes <= 1000, "planner.max_routes: must be in [1, 1000]");
   require(p.extra_moves >= 0 && p.extra_moves <= 10, "planner.extra_moves: must be in [0, 10]");
   require(p.max_nodes >= 1, "planner.max_nodes: must be >= 1");
@@ -136,98 +153,6 @@ Grid<std::uint8_t> trajectory_region(const Grid<std::int32_t>& wave, CellIndex s
     }
   }
   return region;
-}
-
-ExactResult exact_min_moves(const Grid<SafeCell>& safe, CellIndex start, CellIndex goal,
-                            const NeighbourhoodTemplate& t, const PlannerParams& p, int bound) {
-  detail::SearchBudget budget(p);
-  return detail::exact_search(safe, start, goal, t, p, bound, budget);
-}
-
-ExactResult detail::exact_search(const Grid<SafeCell>& safe, CellIndex start, CellIndex goal,
-                                 const NeighbourhoodTemplate& t, const PlannerParams& p, int bound,
-                                 SearchBudget& budget) {
-  ExactResult res;
-  const int w = safe.width, h = safe.height;
-  if (!safe.contains(start.col, start.row) || !safe.contains(goal.col, goal.row) ||
-      safe.at(start) != SafeCell::kSafe || safe.at(goal) != SafeCell::kSafe) {
-    return res;
-  }
-  if (start == goal) {
-    res.cells = std::vector<CellIndex>{start};
-    return res;
-  }
-  const double cell_m = t.cell_m;
-  // Admissible and consistent: a move covers at most d_max, and a cell other than the goal needs
-  // at least one more move. Length: the straight-line distance.
-  auto h_moves = [&](CellIndex c) {
-    if (c == goal) return 0;
-    const double d = std::hypot(c.col - goal.col, c.row - goal.row) * cell_m;
-    return std::max(1, static_cast<int>(std::ceil(d / p.d_max_m - 1e-9)));
-  };
-  auto h_len = [&](CellIndex c) { return std::hypot(c.col - goal.col, c.row - goal.row) * cell_m; };
-  const std::size_t n = safe.size();
-  std::vector<std::int32_t> g_moves(n, std::numeric_limits<std::int32_t>::max());
-  std::vector<double> g_len(n, std::numeric_limits<double>::infinity());
-  std::vector<std::int32_t> parent(n, -1);
-  std::vector<std::uint8_t> closed(n, 0);
-  struct Item {
-    int f_moves;
-    double f_len;
-    std::int32_t cell;
-    bool operator>(const Item& o) const {
-      return f_moves != o.f_moves ? f_moves > o.f_moves : f_len > o.f_len;
-    }
-  };
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
-  const auto si = static_cast<std::int32_t>(idx(w, start));
-  const auto gi = static_cast<std::int32_t>(idx(w, goal));
-  g_moves[static_cast<std::size_t>(si)] = 0;
-  g_len[static_cast<std::size_t>(si)] = 0;
-  open.push({h_moves(start), h_len(start), si});
-  const auto& sd = safe.data;
-  while (!open.empty()) {
-    const Item it = open.top();
-    open.pop();
-    const auto ci = static_cast<std::size_t>(it.cell);
-    if (closed[ci]) continue;
-    closed[ci] = 1;
-    if (it.cell == gi) break;
-    if (!budget.spend("exact", res.nodes)) {
-      res.complete = false;
-      return res;
-    }
-    const CellIndex c{static_cast<int>(ci % static_cast<std::size_t>(w)),
-                      static_cast<int>(ci / static_cast<std::size_t>(w))};
-    const int gm = g_moves[ci] + 1;
-    const double gl = g_len[ci];
-    for_each_visible(
-        t, w, h, c, [&](std::size_t i) { return sd[i] == SafeCell::kSafe; },
-        [&](std::int32_t e) {
-          const auto& ep = t.end_points[static_cast<std::size_t>(e)];
-          const CellIndex nc{c.col + ep.offset.col, c.row + ep.offset.row};
-          const std::size_t ni = idx(w, nc);
-          // Every move but the last is at least D_min long.
-          if (static_cast<std::int32_t>(ni) != gi && ep.length_m < p.d_min_m) return;
-          if (closed[ni]) return;
-          // A route of `bound` moves is known: only strictly fewer moves can improve on it (the
-          // length tie-break among equal moves is left to the known route).
-          if (gm + h_moves(nc) >= bound) return;
-          const double nl = gl + ep.length_m;
-          if (gm > g_moves[ni] || (gm == g_moves[ni] && nl >= g_len[ni])) return;
-          g_moves[ni] = gm;
-          g_len[ni] = nl;
-          parent[ni] = it.cell;
-          open.push({gm + h_moves(nc), nl + h_len(nc), static_cast<std::int32_t>(ni)});
-        });
-  }
-  if (!closed[static_cast<std::size_t>(gi)]) return res;  // complete, and no route
-  std::vector<CellIndex> cells;
-  for (std::int32_t i = gi; i >= 0; i = parent[static_cast<std::size_t>(i)])
-    cells.push_back({i % w, i / w});
-  std::reverse(cells.begin(), cells.end());
-  res.cells = std::move(cells);
-  return res;
 }
 
 Route make_route(const std::vector<CellIndex>& cells, const GridGeometry& geometry,
@@ -329,17 +254,22 @@ PlanResult plan_routes(const Grid<SafeCell>& safe, const GridGeometry& geometry,
     if (res.start_cell == res.goal_cell)
       found.emplace_back(std::vector<CellIndex>{res.start_cell}, "paper");
   }
-  if (params.exact_search) {
-    // The paper's best route bounds the search: it only has to look for fewer moves.
-    const int bound =
-        res.paper_best_moves >= 0 ? res.paper_best_moves : std::numeric_limits<int>::max();
-    ExactResult ex =
-        detail::exact_search(safe, res.start_cell, res.goal_cell, t, params, bound, budget);
+  const bool optimal = params.search != RouteSearch::kPaper;
+  if (optimal) {
+    // The paper's best route bounds the search. The exact search only looks for fewer moves; the
+    // min-link search for at most as many, so that its route is also the shortest of them.
+    const bool paper = res.paper_best_moves >= 0;
+    const int most = std::numeric_limits<int>::max();
+    ExactResult ex = params.search == RouteSearch::kExact
+                         ? detail::exact_search(safe, res.start_cell, res.goal_cell, t, params,
+                                                paper ? res.paper_best_moves : most, budget)
+                         : detail::min_link_search(safe, res.start_cell, res.goal_cell, t, params,
+                                                   paper ? res.paper_best_moves : most, budget);
     res.exact_complete = ex.complete;
     res.exact_nodes = ex.nodes;
     if (ex.cells) {
       res.exact_best_moves = static_cast<int>(ex.cells->size()) - 1;
-      found.emplace_back(std::move(*ex.cells), "exact");
+      found.emplace_back(std::move(*ex.cells), to_string(params.search));
     } else if (ex.complete && res.paper_best_moves >= 0) {
       res.exact_best_moves = res.paper_best_moves;  // proven: no route with fewer moves exists
     }
@@ -361,14 +291,14 @@ PlanResult plan_routes(const Grid<SafeCell>& safe, const GridGeometry& geometry,
   res.budget_reached = budget.reached();
   if (res.routes.empty()) {
     res.message =
-        (params.exact_search && !res.exact_complete) ||
-                (!params.exact_search && !res.budget_reached.empty())
+        (optimal && !res.exact_complete) || (!optimal && !res.budget_reached.empty())
             ? "no route found within the work budget: " + budget_message(params, res)
             : "no route: the goal is connected to the start, but not by straight moves of " +
                   fmt(params.d_min_m) + " to " + fmt(params.d_max_m) + " m through the safe zone";
-  } else if (params.paper_rules && params.exact_search && res.exact_best_moves >= 0 &&
+  } else if (params.paper_rules && optimal && res.exact_best_moves >= 0 &&
              (res.paper_best_moves < 0 || res.exact_best_moves < res.paper_best_moves)) {
-    res.message = "the exact search found a route with fewer moves than the paper's rules";
+    res.message = std::string("the ") + to_string(params.search) +
+                  " search found a route with fewer moves than the paper's rules";
   }
   return res;
 }

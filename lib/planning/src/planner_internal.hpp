@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,26 @@ inline constexpr std::array<CellIndex, 8> kEight = {
 inline std::size_t idx(int width, CellIndex c) {
   return static_cast<std::size_t>(c.row) * static_cast<std::size_t>(width) +
          static_cast<std::size_t>(c.col);
+}
+
+/// Template end point id of every offset in the (2r+1)^2 square around the origin, -1 where the
+/// offset is not an end point (outside D_max, or the origin).
+inline std::vector<std::int32_t> offset_index(const NeighbourhoodTemplate& t) {
+  const int r = t.radius_cells, side = 2 * r + 1;
+  std::vector<std::int32_t> id_of(static_cast<std::size_t>(side) * side, -1);
+  for (std::size_t i = 0; i < t.end_points.size(); ++i) {
+    const auto& o = t.end_points[i].offset;
+    id_of[static_cast<std::size_t>(o.row + r) * side + (o.col + r)] = static_cast<std::int32_t>(i);
+  }
+  return id_of;
+}
+
+/// End point id of an offset (offset_index's table), or -1 when it is not in the template.
+inline std::int32_t end_point_id(const NeighbourhoodTemplate& t,
+                                 const std::vector<std::int32_t>& id_of, CellIndex off) {
+  const int r = t.radius_cells, side = 2 * r + 1;
+  if (std::abs(off.col) > r || std::abs(off.row) > r) return -1;
+  return id_of[static_cast<std::size_t>(off.row + r) * side + (off.col + r)];
 }
 
 /// The work budget shared by the searches of one plan_routes call: nodes per search
@@ -89,5 +110,10 @@ std::vector<std::vector<CellIndex>> paper_search(const Grid<SafeCell>& safe,
 ExactResult exact_search(const Grid<SafeCell>& safe, CellIndex start, CellIndex goal,
                          const NeighbourhoodTemplate& t, const PlannerParams& p, int bound,
                          SearchBudget& budget);
+
+/// min_link_moves within a shared budget.
+ExactResult min_link_search(const Grid<SafeCell>& safe, CellIndex start, CellIndex goal,
+                            const NeighbourhoodTemplate& t, const PlannerParams& p, int bound,
+                            SearchBudget& budget);
 
 }  // namespace indoormap::planning::detail

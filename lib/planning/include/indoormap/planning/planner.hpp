@@ -12,6 +12,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "indoormap/core/errors.hpp"
@@ -20,14 +21,25 @@
 
 namespace indoormap::planning {
 
+/// The search that finds the fewest-moves route (planner.search): both optimal searches return
+/// the same number of moves and the same (shortest) length among the fewest-moves routes.
+enum class RouteSearch {
+  kMinLink,  ///< minimum-link search: A* on moves with a geodesic bound (docs/route-planning.md)
+  kExact,    ///< A* on (moves, length) with a straight-line bound: the reference, slow on buildings
+  kPaper,    ///< none: the paper's rules alone (they can miss the fewest-moves route)
+};
+const char* to_string(RouteSearch s);
+/// "min_link" / "exact" / "paper"; nullopt for anything else.
+std::optional<RouteSearch> route_search_from(const std::string& name);
+
 struct PlannerParams {
   double d_min_m = 0.3;  ///< shortest move except the last one
   double d_max_m = 3.0;  ///< longest move (radius of the neighbourhood template)
   /// Follow the paper's rules (region-restricted moves, Node_Max / Node_Opt terminal points).
   bool paper_rules = true;
-  /// Also run the exact minimum-move search over the whole safe zone and rank its route with the
-  /// paper's (the paper's rules can miss the route with fewest moves: docs/plan-route.md).
-  bool exact_search = true;
+  /// Also search the whole safe zone for the fewest-moves route and rank it with the paper's (the
+  /// paper's rules can miss it: docs/plan-route.md). kPaper: the paper's rules only.
+  RouteSearch search = RouteSearch::kMinLink;
   int max_routes = 5;  ///< routes kept in the ranked list
   /// Paper: nodes on paths "significantly" longer than the best found are dropped; this many
   /// moves more than the best route are still explored (alternatives).
@@ -38,7 +50,8 @@ struct PlannerParams {
   /// can otherwise run for minutes). Reaching it is a result: no route, budget_reached set.
   double max_seconds = 30.0;
   /// Called about once a second during the searches (not part of the config): the search
-  /// ("paper" or "exact"), the nodes it expanded so far and the seconds since plan_routes began.
+  /// ("paper", "exact" or "min_link"), the nodes it expanded so far and the seconds since
+  /// plan_routes began.
   std::function<void(const char* search, std::int64_t nodes, double seconds)> progress;
 };
 
@@ -103,7 +116,7 @@ struct Route {
   int moves = 0;                 ///< straight segments
   int turns = 0;                 ///< commands with a non-zero turn
   double length_m = 0.0;
-  std::string source;  ///< "paper" or "exact": the search that found it
+  std::string source;  ///< "paper", "exact" or "min_link": the search that found it
 };
 
 /// Start or goal given as a map point with an optional heading (degrees, counter-clockwise from
@@ -118,11 +131,13 @@ struct PlanResult {
   std::vector<Route> routes;  ///< ranked: fewest moves, then shortest; empty when none exists
   std::string message;        ///< why there is no route, or notes
   CellIndex start_cell, goal_cell;
-  Grid<std::int32_t> wave;      ///< Lee wave from the start (stopped at the goal's index)
-  Grid<std::uint8_t> region;    ///< trajectory region M_tb
-  int paper_best_moves = -1;    ///< -1: the paper's rules found no route (or were not run)
-  int exact_best_moves = -1;    ///< fewest moves proven by the exact search; -1: none / not run
-  bool exact_complete = false;  ///< the exact search finished within max_nodes
+  Grid<std::int32_t> wave;    ///< Lee wave from the start (stopped at the goal's index)
+  Grid<std::uint8_t> region;  ///< trajectory region M_tb
+  int paper_best_moves = -1;  ///< -1: the paper's rules found no route (or were not run)
+  /// Fewest moves proven by the optimal search (planner.search: min_link or exact); -1: none /
+  /// not run. The exact_* fields keep their names for either optimal search.
+  int exact_best_moves = -1;
+  bool exact_complete = false;  ///< the optimal search finished within its budget
   /// A search stopped at its budget: "planner.max_nodes" or "planner.max_seconds"; "" if none.
   std::string budget_reached;
   std::int64_t paper_nodes = 0, exact_nodes = 0;  ///< expanded nodes
@@ -169,6 +184,21 @@ struct ExactResult {
 ExactResult exact_min_moves(const Grid<SafeCell>& safe, CellIndex start, CellIndex goal,
                             const NeighbourhoodTemplate& tmpl, const PlannerParams& params,
                             int bound = std::numeric_limits<int>::max());
+
+/// The same lexicographic minimum (moves, length) route as exact_min_moves, by a minimum-link
+/// search (docs/route-planning.md): A* on the number of moves with a geodesic lower bound (octile
+/// distance to the goal over the safe zone / D_max), then one pass over the move layers for the
+/// shortest of the fewest-moves routes. Moves are checked exactly as exact_min_moves checks them.
+/// bound: only routes of at most that many moves are searched (nullopt: none within it).
+ExactResult min_link_moves(const Grid<SafeCell>& safe, CellIndex start, CellIndex goal,
+                           const NeighbourhoodTemplate& tmpl, const PlannerParams& params,
+                           int bound = std::numeric_limits<int>::max());
+
+/// A deterministic far-apart pair of safe cells for benchmarks and tests: in the largest
+/// component of the Lee wave's connectivity, a double sweep (the cell farthest in wave steps from
+/// the component's first cell in row-major order, then the cell farthest from that one; ties to
+/// the lower index). nullopt when the map has no safe cell.
+std::optional<std::pair<CellIndex, CellIndex>> far_apart_cells(const Grid<SafeCell>& safe);
 
 /// Builds the commands, turns and length of a route through the given cells.
 Route make_route(const std::vector<CellIndex>& cells, const GridGeometry& geometry,
