@@ -122,6 +122,8 @@ void visit(PipelineConfig& c, F&& f) {
   f("nav", "min_neighbours", nv.min_neighbours);
   f("nav", "floor_tolerance_m", nv.floor_tolerance_m);
   f("nav", "floor_closing_cells", nv.floor_closing_cells);
+  f("nav", "floor_max_offset_m", nv.floor_max_offset_m);
+  f("nav", "floor_tile_m", nv.floor_tile_m);
   f("nav", "rays", nv.rays);
   f("nav", "max_range_m", nv.max_range_m);
   f("nav", "scanner_clear_m", nv.scanner_clear_m);

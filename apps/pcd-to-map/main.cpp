@@ -34,7 +34,8 @@ struct StoreyWork {
 int run(int argc, char** argv) {
   CLI::App cli_app{
       "pcd-to-map: turn indoor lidar scans into a levelled room layout and a ROS navigation map.\n"
-      "Outputs map.pgm + map.yaml, layout.pgm, layout.png, objects.json and summary.json.\n"};
+      "Outputs map.pgm + map.yaml + map.png (the navigation map), layout.pgm, layout.png,\n"
+      "objects.json and summary.json (several storeys: each in storey_<k>/).\n"};
   cli_app.footer(
       "Examples:\n"
       "  pcd-to-map clouds/office/cloud.pcd -o out\n"

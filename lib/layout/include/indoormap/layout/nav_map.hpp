@@ -27,16 +27,23 @@ struct NavParams {
   /// leg or a wall stands over many layers; a stray return or a dangling cord seen from one side
   /// gives a speck of one or two points in one or two voxels.
   /// Or at least min_neighbours of its 8 neighbours hold body-band points too: a sparse surface
-  /// far from the scanner (one or two points per cell) is still a surface, a cord is one cell wide.
+  /// far from the scanner (one or two points per cell) is still a surface; a cord, or the veil of
+  /// mixed pixels at a door edge (a line of specks), has at most 2.
   int min_points = 4;
   double min_column_m = 0.2;
-  int min_neighbours = 2;
+  int min_neighbours = 3;
   /// The floor counts as observed in a column with a point from floor_z - floor_tolerance_m up to
   /// the body band.
   double floor_tolerance_m = 0.1;
   /// Closings (3x3 square) of the observed floor: far from a scanner the floor's returns thin out
   /// into lines one or two cells apart. 0: off.
   int floor_closing_cells = 1;
+  /// The floor's height per tile of floor_tile_m: the most frequent lowest layer of its columns
+  /// up to floor_max_offset_m above the floor found (and floor_tolerance_m below), when a quarter
+  /// of the tile's columns have one. A levelling residual of 0.3 degrees raises the floor 10 cm
+  /// across a 20 m building; the body band follows the floor.
+  double floor_max_offset_m = 0.2;
+  double floor_tile_m = 1.0;
   /// Free space from rays: per scanner position, the map is cast in 2D along azimuth bins, each
   /// to the farthest column in the bin that holds a point below height_m (floor or body band),
   /// stopping at the first occupied cell. false: observed floor alone.
