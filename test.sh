@@ -65,10 +65,11 @@ if [ "$sanitize" = 1 ]; then
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:suppressions=$PWD/tests/sanitizers/ubsan.supp"
   export ASAN_OPTIONS="detect_leaks=1:check_initialization_order=1"
   export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp"
-  # The accuracy sweeps of tests/sanitizers/skip_tests.txt run in build/ only (reasons there).
+  # The accuracy sweeps of tests/sanitizers/skip_tests.txt and the tests labelled "slow"
+  # (tests/test_*_slow.cpp) run in build/ only (reasons there).
   skip="$(sed 's/#.*//' tests/sanitizers/skip_tests.txt | awk 'NF { printf "%s%s", s, $1; s = "|" }')"
   stage "build-san/ ctest (ASan + UBSan)" \
-    ctest --test-dir build-san --output-on-failure --timeout 2400 -j "$jobs" -E "^(${skip//./\\.})\$"
+    ctest --test-dir build-san --output-on-failure --timeout 2400 -j "$jobs" -LE slow -E "^(${skip//./\\.})\$"
   unset UBSAN_OPTIONS ASAN_OPTIONS LSAN_OPTIONS
 fi
 

@@ -42,7 +42,7 @@ const Inputs& inputs() {
   static const Inputs in = [] {
     Inputs r;
     r.big = bench::synthetic_building(10'000'000);
-    PointCloud c{r.big, {}};
+    PointCloud c{r.big, {}, {}};
     cloud::rotate(c, cloud::estimate_level(c.points, {}).map_from_input);
     r.big = std::move(c.points);
     r.shuffled = r.big;

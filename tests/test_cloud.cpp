@@ -60,7 +60,7 @@ TEST(Level, RecoversKnownTilt) {
   const Eigen::Vector3d up = r.map_from_input * (R * Eigen::Vector3d::UnitZ());
   EXPECT_GT(up.z(), std::cos(0.05 * M_PI / 180.0));
   // After levelling the floor points lie within a few millimetres of one height.
-  PointCloud c{pts, {}};
+  PointCloud c{pts, {}, {}};
   rotate(c, r.map_from_input);
   double zmin = 1e9, zmax = -1e9;
   for (const auto& p : c.points)

@@ -38,7 +38,7 @@ SceneScore score_scene(std::uint64_t seed, double min_area_m2) {
   rp.rooms = 1;
   const sim::Scene scene = sim::normalised(sim::random_scene(seed, rp));
   const sim::SimResult s = sim::simulate(scene);
-  PointCloud cloud{s.points, s.scanner_positions_m};
+  PointCloud cloud{s.points, s.scanner_positions_m, {}};
   const layout::MapResult m = layout::make_map(std::move(cloud), {});
   const auto objs = objects::extract_objects(m.layout.layout, m.geometry, m.voxels, m.layers, {},
                                              m.cloud_map.scanners);

@@ -94,7 +94,8 @@ TEST(PcdToMap, WritesEveryOutputInItsFormat) {
       EXPECT_NE(e.path().filename().string()[0], '.') << e.path();
     }
 
-  // The ROS map loads the way map_server reads it, and agrees with the layout classes.
+  // The ROS map loads the way map_server reads it; it is the navigation map (summary.json
+  // nav_map), not M_r: a free cell there is never a wall or furniture cell of M_r's interior.
   formats::RosMap ros = app::read_ros_map(out / "map.yaml");
   const std::string pgm = test::read_text(out / "layout.pgm");
   ASSERT_EQ(pgm.substr(0, 3), "P5\n");
@@ -102,16 +103,19 @@ TEST(PcdToMap, WritesEveryOutputInItsFormat) {
   const std::string header = "P5\n" + std::to_string(w) + " " + std::to_string(h) + "\n255\n";
   ASSERT_EQ(pgm.substr(0, header.size()), header);
   ASSERT_EQ(pgm.size(), header.size() + static_cast<std::size_t>(w) * h);
-  int free_cells = 0;
+  int free_cells = 0, ros_free = 0, ros_occupied = 0;
   for (int r = 0; r < h; ++r)
     for (int c = 0; c < w; ++c) {
       const auto raw =
           static_cast<Cell>(pgm[header.size() + static_cast<std::size_t>(h - 1 - r) * w + c]);
       const Cell ros_cell = ros.cells.at(c, r);
-      const Cell expected = raw == Cell::kFurniture ? Cell::kWall : raw;
-      EXPECT_EQ(ros_cell, expected);
       free_cells += raw == Cell::kFree;
+      ros_free += ros_cell == Cell::kFree;
+      ros_occupied += ros_cell == Cell::kWall;
     }
+  const auto nav = nlohmann::json::parse(test::read_text(out / "summary.json"))["nav_map"];
+  EXPECT_EQ(ros_free, nav["cells"]["free"].get<int>());
+  EXPECT_EQ(ros_occupied, nav["cells"]["occupied"].get<int>());
   EXPECT_NEAR(ros.meta.resolution_m, 0.05, 1e-12);
   // The scanner cell (3, 2.5) is free, in map metres through the YAML origin.
   EXPECT_EQ(ros.cells.at(ros.geometry.cell_of({3.0, 2.5})), Cell::kFree);

@@ -29,6 +29,12 @@ void add_pipeline_options(CLI::App& app, PipelineCli& cli) {
   app.add_option("--unit", cli.unit, "Unit of PCD/PLY/XYZ input: m (default), cm, mm, or metres per unit");
   app.add_option("--scanner", cli.scanners,
                  "Scanner position X,Y,Z in metres (input frame); repeat for several. Overrides file poses");
+  app.add_option("--trajectory", cli.trajectory,
+                 "Scanner positions from a file: TUM 't x y z qx qy qz qw' or 'x y z' lines "
+                 "(metres, input frame); added to the others");
+  app.add_option("--storey", cli.storey,
+                 "Map only storey K (0: the lowest; see summary.json 'storeys')")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--cell-m", cli.cell_m, "Voxel / map cell size in metres (voxel.cell_m)");
   app.add_flag("--no-level", cli.no_level, "Do not level the cloud (level.enabled: false)");
   app.add_option("--start", cli.start, "Route start X,Y[,DEG] in the map frame (with --goal: route outputs)");

@@ -21,6 +21,8 @@ struct PipelineCli {
   std::string up_axis;                ///< "z" / "y"
   std::string unit;                   ///< "m", "cm", "mm" or metres per unit
   std::vector<std::string> scanners;  ///< "X,Y,Z"
+  std::string trajectory;             ///< TUM or x y z file of scanner positions
+  int storey = -1;                    ///< --storey K: only that storey (-1: every storey)
   double cell_m = 0.0;                ///< 0: from config
   bool no_level = false;
   std::string start;  ///< "X,Y[,DEG]" map frame: plan a route (with goal)

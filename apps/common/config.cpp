@@ -110,6 +110,25 @@ void visit(PipelineConfig& c, F&& f) {
   f("border", "shadow_chain_tol_m", bd.shadow_chain_tol_m);
   f("border", "corner_shadow_min_turn_deg", bd.corner_shadow_min_turn_deg);
   f("border", "corner_shadow_max_turn_deg", bd.corner_shadow_max_turn_deg);
+  auto& st = c.storeys;
+  f("storeys", "enabled", st.enabled);
+  f("storeys", "slab_max_fraction", st.slab_max_fraction);
+  f("storeys", "min_slab_m", st.min_slab_m);
+  f("storeys", "min_height_m", st.min_height_m);
+  f("storeys", "surface_min_fraction", st.surface_min_fraction);
+  auto& nv = c.map.nav;  // the navigation map; its robot keys open the robot section
+  f("nav", "min_points", nv.min_points);
+  f("nav", "min_column_m", nv.min_column_m);
+  f("nav", "min_neighbours", nv.min_neighbours);
+  f("nav", "floor_tolerance_m", nv.floor_tolerance_m);
+  f("nav", "floor_closing_cells", nv.floor_closing_cells);
+  f("nav", "floor_max_offset_m", nv.floor_max_offset_m);
+  f("nav", "floor_tile_m", nv.floor_tile_m);
+  f("nav", "rays", nv.rays);
+  f("nav", "max_range_m", nv.max_range_m);
+  f("nav", "scanner_clear_m", nv.scanner_clear_m);
+  f("robot", "min_obstacle_height_m", nv.min_obstacle_height_m);
+  f("robot", "height_m", nv.height_m);
   visit_plan(c.plan, f);
 }
 
@@ -188,6 +207,8 @@ void validate(const PipelineConfig& c) {
   cloud::validate(c.map.ghosts);
   cloud::validate(c.map.layers);
   layout::validate(c.map.layout);  // throws UsageError naming layout.<key>
+  layout::validate(c.map.nav);
+  layout::validate(c.storeys);     // robot.min_obstacle_height_m, robot.height_m, nav.<key>
   objects::validate(c.objects);    // objects.<key>
   border::validate(c.border);      // throws UsageError naming border.<key>
   validate(c.plan);

@@ -11,6 +11,7 @@
 #include "indoormap/border/border.hpp"
 #include "indoormap/cloud_io/load.hpp"
 #include "indoormap/layout/pipeline.hpp"
+#include "indoormap/layout/storeys.hpp"
 #include "indoormap/objects/objects.hpp"
 #include "plan_config.hpp"
 
@@ -22,6 +23,7 @@ struct PipelineConfig {
   /// the positions found in the files.
   std::vector<Eigen::Vector3d> scanners;
   layout::MapParams map;
+  layout::StoreyParams storeys;  ///< storeys.*
   objects::ObjectParams objects;
   border::BorderParams border;  ///< room border closure (border.*)
   PlanConfig plan;  ///< robot.*, safe_zone.*, planner.*: the route of --start / --goal

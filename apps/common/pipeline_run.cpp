@@ -1,11 +1,13 @@
 #include "pipeline_run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 
 #include "cloud_hints.hpp"
+#include "scanner_positions.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/draw/layout_png.hpp"
@@ -35,6 +37,12 @@ json plane_json(const cloud::PlaneFit& p) {
 
 json band_json(const cloud::HeightBand& b) {
   return {{"lo_m", b.lo_m}, {"hi_m", b.hi_m}, {"layers", {b.lo_layer, b.hi_layer}}};
+}
+
+std::string fmt_m(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2f", v);
+  return b;
 }
 
 double ms_since(std::chrono::steady_clock::time_point t) {
@@ -101,18 +109,29 @@ PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_
   std::vector<std::string> input_warnings;
   for (const auto& in : loaded.inputs)
     input_warnings.insert(input_warnings.end(), in.warnings.begin(), in.warnings.end());
-  if (!cfg.scanners.empty()) loaded.cloud.scanners = cfg.scanners;
+  if (!cfg.scanners.empty()) {  // given positions replace the files': origins no longer apply
+    loaded.cloud.scanners = cfg.scanners;
+    loaded.cloud.origins.clear();
+  }
+  const CloudExtent extent = extent_of(loaded.cloud.points);
+  if (!cli.trajectory.empty()) add_trajectory(cli.trajectory, extent, loaded.cloud);
   run.scanner_source = loaded.cloud.scanners.empty() ? "estimated"
+                       : !cli.trajectory.empty()     ? "trajectory"
                        : cfg.scanners.empty()        ? "file"
                                                      : "config";
   run.kept = loaded.cloud.points.size();
   if (keep_input_points) run.input_points = loaded.cloud.points;
   std::string names;  // the data as a whole: every input
   for (const auto& in : cli.inputs) names += (names.empty() ? "" : ", ") + in;
-  const CloudExtent extent = extent_of(loaded.cloud.points);
   const std::string unit = unit_hint(extent, cfg.load.unit_m);  // empty unless over 1 km wide
   try {
-    run.map = layout::make_map(std::move(loaded.cloud), cfg.map);
+    auto maps = layout::make_storey_maps(std::move(loaded.cloud), cfg.map, cfg.storeys, cli.storey);
+    run.storeys = maps.storeys;
+    run.mapped = maps.mapped;
+    if (maps.maps.empty()) throw InputError(names, "no storey holds points");
+    run.map = std::move(maps.maps.front());
+    run.more_maps.assign(std::make_move_iterator(maps.maps.begin() + 1),
+                         std::make_move_iterator(maps.maps.end()));
   } catch (const InputError& e) {
     if (!e.file().empty()) throw;
     std::string hint = unit;
@@ -122,6 +141,13 @@ PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_
   } catch (const BudgetError& e) {  // a grid too large: most likely the unit, say so first
     if (unit.empty()) throw;
     throw InputError(names, unit + " (" + e.what() + ")");
+  }
+  if (run.storeys.size() > 1) {
+    char msg[96];
+    std::snprintf(msg, sizeof msg, "%zu storeys found; mapped:", run.storeys.size());
+    std::string w = msg;
+    for (int k : run.mapped) w += " " + std::to_string(k);
+    input_warnings.push_back(w);
   }
   run.map.warnings.insert(run.map.warnings.begin(), input_warnings.begin(), input_warnings.end());
   if (const auto w = up_axis_warning(run.map.voxels, names); !w.empty())
@@ -154,7 +180,7 @@ std::vector<std::string> write_map_outputs(const fs::path& out, const PipelineRu
   for (const auto& s : m.cloud_map.scanners) markers.emplace_back(s.x(), s.y());
   if (m.layout.seeds_estimated)
     for (const auto& s : m.layout.seeds) markers.push_back(m.geometry.center_of(s));
-  formats::write_ros_map(out, "map", m.layout.layout, m.geometry);
+  formats::write_ros_map(out, "map", m.nav.map, m.geometry);  // the robot's map, not M_r
   formats::write_layout_pgm(out / "layout.pgm", m.layout.layout);
   draw::RenderOptions ro;
   ro.title = "room layout M_r  (" + std::to_string(m.geometry.width()) + " x " +
@@ -163,7 +189,13 @@ std::vector<std::string> write_map_outputs(const fs::path& out, const PipelineRu
   ro.markers_map = markers;
   ro.marker_label = m.layout.seeds_estimated ? "scanner (estimated)" : "scanner";
   draw::write_layout_png(out / "layout.png", m.layout.layout, m.geometry, ro);
-  return {"map.pgm", "map.yaml", "layout.pgm", "layout.png"};
+  ro.title = "navigation map (map.pgm): body band " + fmt_m(m.nav.body_lo_m - m.layers.floor_z_m) +
+             "-" + fmt_m(m.nav.body_hi_m - m.layers.floor_z_m) + " m above the floor";
+  ro.marker_label = "scanner position";
+  ro.markers_map.clear();
+  for (const auto& s : m.cloud_map.scanners) ro.markers_map.emplace_back(s.x(), s.y());
+  draw::write_layout_png(out / "map.png", m.nav.map, m.geometry, ro);
+  return {"map.pgm", "map.yaml", "map.png", "layout.pgm", "layout.png"};
 }
 
 json summary_json(const std::string& program, const PipelineRun& run, const PipelineConfig& cfg) {
@@ -253,10 +285,37 @@ json summary_json(const std::string& program, const PipelineRun& run, const Pipe
         {"furniture", m.layout.cells_furniture},
         {"free", m.layout.cells_free},
         {"unknown", m.layout.cells_unknown}}},
+      {"nav_map",
+       {{"body_band_m", {m.nav.body_lo_m, m.nav.body_hi_m}},
+        {"positions", m.nav.positions},
+        {"rays", m.nav.rays},
+        {"cells",
+         {{"occupied", m.nav.cells_occupied},
+          {"free", m.nav.cells_free},
+          {"free_floor_seen", m.nav.cells_floor_seen},
+          {"free_rays_only", m.nav.cells_ray_free},
+          {"unknown", m.nav.cells_unknown}}},
+        {"specks_dropped", m.nav.specks_dropped}}},
       {"timings_ms", timings},
       {"parameters", to_json(cfg)},
       {"warnings", m.warnings},
   };
+}
+
+json storeys_json(const PipelineRun& run) {
+  json out = json::array();
+  for (std::size_t k = 0; k < run.storeys.size(); ++k) {
+    const auto& s = run.storeys[k];
+    const bool mapped =
+        std::find(run.mapped.begin(), run.mapped.end(), static_cast<int>(k)) != run.mapped.end();
+    out.push_back({{"index", k},
+                   {"floor_z_m", s.floor_z_m},
+                   {"ceiling_z_m", s.ceiling_z_m},
+                   {"z_range_m", {s.lo_z_m, s.hi_z_m}},
+                   {"mapped", mapped},
+                   {"dir", run.storeys.size() > 1 ? "storey_" + std::to_string(k) : "."}});
+  }
+  return out;
 }
 
 void report(const std::string& program, const PipelineRun& run, bool quiet) {

@@ -13,6 +13,7 @@
 #include "indoormap/border/border.hpp"
 #include "indoormap/cloud_io/load.hpp"
 #include "indoormap/layout/pipeline.hpp"
+#include "indoormap/layout/storeys.hpp"
 #include "indoormap/objects/objects.hpp"
 
 namespace indoormap::app {
@@ -20,9 +21,12 @@ namespace indoormap::app {
 struct PipelineRun {
   std::vector<cloud_io::InputReport> inputs;
   std::vector<Eigen::Vector3f> input_points;  ///< input frame; kept only when asked for
-  layout::MapResult map;
+  layout::MapResult map;  ///< the (first) storey mapped
+  std::vector<layout::Storey> storeys;  ///< every storey found, bottom up
+  std::vector<int> mapped;              ///< the storeys mapped: map, then more_maps
+  std::vector<layout::MapResult> more_maps;
   std::size_t kept = 0;
-  std::string scanner_source;  ///< "file", "config" or "estimated"
+  std::string scanner_source;  ///< "file", "config", "trajectory" or "estimated"
   double load_ms = 0.0;
 };
 
@@ -58,13 +62,18 @@ void finish_summary(nlohmann::json& summary, const std::filesystem::path& out,
 /// re-thrown naming all inputs.
 PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& config, bool keep_input_points);
 
-/// map.pgm + map.yaml, layout.pgm, layout.png. Returns the file names.
+/// map.pgm + map.yaml (the navigation map) and its picture map.png, layout.pgm, layout.png.
+/// Returns the file names.
 std::vector<std::string> write_map_outputs(const std::filesystem::path& out,
                                            const PipelineRun& run);
 
 /// summary.json contents common to the pipeline apps; apps add their own keys.
 nlohmann::json summary_json(const std::string& program, const PipelineRun& run,
                             const PipelineConfig& config);
+
+/// The storeys found (index, floor and ceiling heights in the map frame, the points' z range,
+/// whether mapped, and the directory of its outputs).
+nlohmann::json storeys_json(const PipelineRun& run);
 
 /// Prints the warnings and a one-line report on stderr.
 void report(const std::string& program, const PipelineRun& run, bool quiet = false);

@@ -3,11 +3,14 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <optional>
+#include <vector>
 
 #include "border_outputs.hpp"
 #include "cli.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
+#include "indoormap/version.hpp"
 #include "objects_outputs.hpp"
 #include "output_set.hpp"
 #include "pipeline_run.hpp"
@@ -19,10 +22,20 @@ using nlohmann::json;
 
 namespace {
 
+struct StoreyWork {
+  int index = 0;
+  layout::MapResult map;
+  objects::ObjectsResult objs;
+  border::BorderResult border;
+  std::size_t furniture_count = 0;
+  double objects_ms = 0.0, border_ms = 0.0;
+};
+
 int run(int argc, char** argv) {
   CLI::App cli_app{
       "pcd-to-map: turn indoor lidar scans into a levelled room layout and a ROS navigation map.\n"
-      "Outputs map.pgm + map.yaml, layout.pgm, layout.png, objects.json and summary.json.\n"};
+      "Outputs map.pgm + map.yaml + map.png (the navigation map), layout.pgm, layout.png,\n"
+      "objects.json and summary.json (several storeys: each in storey_<k>/).\n"};
   cli_app.footer(
       "Examples:\n"
       "  pcd-to-map clouds/office/cloud.pcd -o out\n"
@@ -30,6 +43,8 @@ int run(int argc, char** argv) {
       "  pcd-to-map scan.xyz --unit mm --up-axis y --scanner 0,0,1.5 -o out/scan\n"
       "  pcd-to-map --print-config > my.yaml; pcd-to-map -c my.yaml room.ply -o out\n"
       "  pcd-to-map clouds/office/cloud.pcd --start 1,1,0 --goal 4,3 -o out   # adds a route\n"
+      "  pcd-to-map building.pcd --trajectory trajectory.txt -o out   # mobile scan, its path\n"
+      "  pcd-to-map building.pcd --storey 1 -o out/first   # the second storey only\n"
       "Exit codes: 0 done, 2 bad usage or bad input, 3 no route (with --start/--goal), 1 other "
       "failure.");
   app::PipelineCli cli;
@@ -41,40 +56,72 @@ int run(int argc, char** argv) {
   const fs::path& out = setup->out;
 
   app::PipelineRun run = app::run_pipeline(setup->cli, setup->config, /*keep_input_points=*/false);
-  const auto& m = run.map;
-  double objects_ms = 0.0;
-  objects::ObjectsResult objs = app::timed_objects(m, cfg.objects, &objects_ms);
-  double border_ms = 0.0;
-  const border::BorderResult border_result = app::timed_border(m, cfg.border, &border_ms);
-  const std::size_t furniture_count = objs.objects.size();
-  app::add_border_objects(objs, border_result);
+  const bool storeyed = run.storeys.size() > 1;  // outputs in storey_<k>/, else in OUTDIR itself
+  if (storeyed && (!setup->cli.start.empty() || !setup->cli.goal.empty()) && run.mapped.size() > 1)
+    throw UsageError("--start / --goal on a cloud of " + std::to_string(run.storeys.size()) +
+                     " storeys: pick one with --storey K");
+  // Compute every storey first, then write everything (all or nothing).
+  std::vector<StoreyWork> work;
+  for (std::size_t i = 0; i < run.mapped.size(); ++i) {
+    StoreyWork w;
+    w.index = run.mapped[i];
+    w.map = i == 0 ? std::move(run.map) : std::move(run.more_maps[i - 1]);
+    w.objs = app::timed_objects(w.map, cfg.objects, &w.objects_ms);
+    w.border = app::timed_border(w.map, cfg.border, &w.border_ms);
+    w.furniture_count = w.objs.objects.size();
+    app::add_border_objects(w.objs, w.border);
+    work.push_back(std::move(w));
+  }
 
   const auto t_write = std::chrono::steady_clock::now();
   app::OutputSet set(out, "pcd-to-map");  // all or nothing: docs/pcd-to-map.md, "Outputs"
-  const fs::path& dir = set.dir();
-  std::vector<std::string> outputs = app::write_map_outputs(dir, run);
-  app::ObjectOutputs what;
-  what.csv = what.picture = false;
-  for (auto& f : app::write_object_outputs(dir, m, objs, what)) outputs.push_back(f);
-  json border_block = app::write_border_outputs(dir, m, border_result, border_ms);
-  for (const auto& f : border_block["outputs"]) outputs.push_back(f.get<std::string>());
-  const auto route = app::write_route_outputs(dir, setup->cli, cfg, m.layout.layout,
-                                              m.geometry);  // --start/--goal
-  if (route)
-    for (const auto& f : route->summary.value("outputs", json::array()))
-      outputs.push_back(f.get<std::string>());
-
-  json summary = app::summary_json("pcd-to-map", run, cfg);
-  summary["border"] = border_block;
-  summary["route"] = route ? route->summary : json(nullptr);
-  summary["objects"] = {{"count", objs.objects.size()},
-                        {"from_border", objs.objects.size() - furniture_count},
-                        {"file", "objects.json"}};
-  summary["timings_ms"]["objects"] = objects_ms;
-  app::finish_summary(summary, dir, outputs, t_write, setup->start);
+  std::vector<std::string> top_outputs;
+  std::optional<app::RouteOutputs> route;
+  json storeys = json::array();
+  for (auto& w : work) {
+    const std::string sub = storeyed ? "storey_" + std::to_string(w.index) : "";
+    const fs::path dir = sub.empty() ? set.dir() : set.dir() / sub;
+    if (!sub.empty()) fs::create_directories(dir);
+    run.map = std::move(w.map);
+    const auto& m = run.map;
+    std::vector<std::string> outputs = app::write_map_outputs(dir, run);
+    app::ObjectOutputs what;
+    what.csv = what.picture = false;
+    for (auto& f : app::write_object_outputs(dir, m, w.objs, what)) outputs.push_back(f);
+    json border_block = app::write_border_outputs(dir, m, w.border, w.border_ms);
+    for (const auto& f : border_block["outputs"]) outputs.push_back(f.get<std::string>());
+    route = app::write_route_outputs(dir, setup->cli, cfg, m.layout.layout,
+                                     m.geometry);  // --start/--goal
+    if (route)
+      for (const auto& f : route->summary.value("outputs", json::array()))
+        outputs.push_back(f.get<std::string>());
+    json summary = app::summary_json("pcd-to-map", run, cfg);
+    summary["border"] = border_block;
+    summary["route"] = route ? route->summary : json(nullptr);
+    summary["objects"] = {{"count", w.objs.objects.size()},
+                          {"from_border", w.objs.objects.size() - w.furniture_count},
+                          {"file", "objects.json"}};
+    summary["timings_ms"]["objects"] = w.objects_ms;
+    summary["storeys"] = app::storeys_json(run);
+    if (sub.empty()) {
+      app::finish_summary(summary, dir, outputs, t_write, setup->start);
+    } else {
+      summary["storey"] = w.index;
+      app::finish_summary(summary, dir, outputs, t_write, setup->start);
+      for (const auto& f : outputs) top_outputs.push_back(sub + "/" + f);
+      top_outputs.push_back(sub + "/summary.json");
+    }
+    app::report("pcd-to-map", run, setup->cli.quiet);
+  }
+  if (storeyed) {  // OUTDIR/summary.json: the storeys and where their outputs are
+    json summary = {{"program", "pcd-to-map"},
+                    {"version", kVersion},
+                    {"storeys", app::storeys_json(run)},
+                    {"parameters", app::to_json(cfg)}};
+    app::finish_summary(summary, set.dir(), top_outputs, t_write, setup->start);
+  }
   set.commit();
 
-  app::report("pcd-to-map", run, setup->cli.quiet);
   std::cout << "outputs written to " << out.string() << "\n";
   if (route && !route->found) std::cerr << "pcd-to-map: " << route->message << "\n";
   return route && !route->found ? static_cast<int>(ExitCode::kNoResult) : 0;

@@ -125,13 +125,34 @@ void load_one(const std::string& path, const LoadOptions& options, LoadResult& r
 
   // Convert in place and compact away non-finite points (after conversion, so that a finite
   // input that overflows float is dropped too).
-  std::size_t kept = first;
-  for (std::size_t i = first; i < points.size(); ++i) {
+  // Runs of points per scanner, in raw indices; with at most one scanner, the whole file.
+  if (info.runs.empty())
+    info.runs.emplace_back(points.size() - first,
+                           info.scanners.size() == 1 ? 0 : detail::ReadInfo::kNoScanner);
+  std::vector<PointCloud::OriginSpan> spans;
+  std::size_t kept = first, i = first;
+  const std::size_t scanner_base = result.cloud.scanners.size();
+  for (const auto& [n, scanner] : info.runs) {
+    const std::size_t span_first = kept;
+    for (const std::size_t end = std::min(points.size(), i + static_cast<std::size_t>(n)); i < end;
+         ++i) {
+      Eigen::Vector3f p = points[i];
+      if (!info.output_frame) p = to_output(points[i].cast<double>(), options).cast<float>();
+      if (p.allFinite()) points[kept++] = p;
+    }
+    spans.push_back({span_first, kept - span_first,
+                     scanner == detail::ReadInfo::kNoScanner ? scanner : scanner_base + scanner});
+  }
+  for (; i < points.size(); ++i) {  // not in a run (no reader leaves any): no known origin
     Eigen::Vector3f p = points[i];
     if (!info.output_frame) p = to_output(points[i].cast<double>(), options).cast<float>();
     if (p.allFinite()) points[kept++] = p;
   }
+  if (const std::size_t end = spans.back().first + spans.back().count; kept > end)
+    spans.push_back({end, kept - end, detail::ReadInfo::kNoScanner});
   points.resize(kept);
+  auto& origins = result.cloud.origins;
+  origins.insert(origins.end(), spans.begin(), spans.end());
 
   report.points_read = info.points;
   report.points_dropped = info.points - (kept - first);

@@ -191,6 +191,7 @@ void read_scan(const Scan& scan, Budget budget, const LoadOptions& options,
   budget.used += info.points;
   const std::array<double, 16> id = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   const std::array<double, 16>& a = m ? *m : id;
+  const std::uint64_t before = info.points;
   info.points += read_text_points(
       file, budget, false, options, [&](std::uint64_t n) { reserve_more(out, n); },
       [&](double x, double y, double z) {
@@ -206,6 +207,12 @@ void read_scan(const Scan& scan, Budget budget, const LoadOptions& options,
     const bool dup = std::any_of(info.scanners.begin(), info.scanners.end(),
                                  [&](const Eigen::Vector3d& q) { return (q - s).norm() < 1e-3; });
     if (!dup) info.scanners.push_back(s);
+    const auto it = std::find_if(info.scanners.begin(), info.scanners.end(),
+                                 [&](const Eigen::Vector3d& q) { return (q - s).norm() < 1e-3; });
+    info.runs.emplace_back(info.points - before,
+                           static_cast<std::size_t>(it - info.scanners.begin()));
+  } else {
+    info.runs.emplace_back(info.points - before, ReadInfo::kNoScanner);
   }
 }
 

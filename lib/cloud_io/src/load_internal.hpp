@@ -32,6 +32,11 @@ struct ReadInfo {
   int scans = 0;                      ///< 3DTK: scan files read
   bool output_frame = false;          ///< true: points and scanners are already metres, z up
   std::vector<std::string> warnings;  ///< InputReport::warnings
+  /// Which scanner saw which points (3DTK: one run per scan file): consecutive runs of appended
+  /// points (raw, non-finite included) with the index of their scanner in `scanners`, or
+  /// kNoScanner. Empty: a file with at most one scanner (all its points are that scanner's).
+  static constexpr std::size_t kNoScanner = static_cast<std::size_t>(-1);
+  std::vector<std::pair<std::uint64_t, std::size_t>> runs;
 };
 
 /// Makes room for `n` more points, growing geometrically so that merging many files stays

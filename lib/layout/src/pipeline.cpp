@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <span>
 
 namespace indoormap::layout {
 
@@ -20,34 +21,68 @@ class Stopwatch {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
+// Rays need the scanner each point came from: one scanner sees everything; several need the
+// cloud's origin spans; without them the filter is skipped rather than run with the wrong one.
+void run_ghost_filter(const PointCloud& cloud, const cloud::GhostParams& params, MapResult& r) {
+  if (cloud.scanners.size() == 1) {
+    r.ghosts = cloud::remove_ghost_voxels(r.voxels, cloud.points, cloud.scanners[0], params);
+    return;
+  }
+  if (!params.enabled || cloud.scanners.empty()) return;
+  std::vector<cloud::RaySource> sources;
+  std::size_t covered = 0;
+  const std::span<const Eigen::Vector3f> all(cloud.points);
+  for (const auto& o : cloud.origins) {
+    if (o.scanner >= cloud.scanners.size() || o.first + o.count > all.size()) continue;
+    sources.push_back({all.subspan(o.first, o.count), cloud.scanners[o.scanner]});
+    covered += o.count;
+  }
+  if (covered == cloud.points.size() && !sources.empty()) {
+    r.ghosts = cloud::remove_ghost_voxels_by_origin(r.voxels, sources, params);
+    return;
+  }
+  r.warnings.push_back("ghost filter skipped: " + std::to_string(cloud.scanners.size()) +
+                       " scanner positions and no record of which point came from which");
+}
+
 }  // namespace
 
-MapResult make_map(PointCloud cloud, const MapParams& params) {
+void validate(const MapParams& params) {
   cloud::validate(params.level);
   cloud::validate(params.voxel);
   cloud::validate(params.ghosts);
   cloud::validate(params.layers);
-  validate(params.layout);  // every check before the heavy stages
+  validate(params.layout);
+  validate(params.nav);
+}
+
+cloud::LevelResult level_cloud(PointCloud& cloud, const MapParams& params,
+                               std::vector<std::string>& warnings) {
+  cloud::LevelResult level = cloud::estimate_level(cloud.points, params.level);
+  if (level.levelled)
+    cloud::rotate(cloud, level.map_from_input);
+  else if (params.level.enabled)
+    warnings.push_back("not levelled: " + level.note);
+  return level;
+}
+
+MapResult make_map(PointCloud cloud, const MapParams& params) {
+  validate(params);  // every check before the heavy stages
   MapResult r;
   Stopwatch sw;
-  r.level = cloud::estimate_level(cloud.points, params.level);
-  if (r.level.levelled)
-    cloud::rotate(cloud, r.level.map_from_input);
-  else if (params.level.enabled)
-    r.warnings.push_back("not levelled: " + r.level.note);
+  r.level = level_cloud(cloud, params, r.warnings);
   r.timings.push_back({"level", sw.lap_ms()});
-
   r.bounds = cloud::robust_bounds(cloud.points, params.voxel);
   r.voxels = cloud::voxelize(cloud.points, r.bounds, params.voxel);
   r.timings.push_back({"voxelize", sw.lap_ms()});
-  // Rays need the scanner each point came from: with several scanners and no attribution, skip.
-  if (cloud.scanners.size() == 1) {
-    r.ghosts = cloud::remove_ghost_voxels(r.voxels, cloud.points, cloud.scanners[0], params.ghosts);
-    r.timings.push_back({"ghosts", sw.lap_ms()});
-  } else if (params.ghosts.enabled && cloud.scanners.size() > 1) {
-    r.warnings.push_back("ghost filter skipped: " + std::to_string(cloud.scanners.size()) +
-                         " scanner positions and no record of which point came from which");
-  }
+  map_voxelized(std::move(cloud), params, r);
+  return r;
+}
+
+void map_voxelized(PointCloud cloud, const MapParams& params, MapResult& r) {
+  Stopwatch sw;
+  run_ghost_filter(cloud, params.ghosts, r);
+  if (r.ghosts.applied) r.timings.push_back({"ghosts", sw.lap_ms()});
 
   r.layers = cloud::analyse_layers(r.voxels, params.layers);
   for (const auto& w : r.layers.warnings) r.warnings.push_back(w);
@@ -83,8 +118,10 @@ MapResult make_map(PointCloud cloud, const MapParams& params) {
   r.layout = build_layout(r.walls, r.furniture, r.geometry, seeds, params.layout, &support);
   for (const auto& w : r.layout.warnings) r.warnings.push_back(w);
   r.timings.push_back({"layout", sw.lap_ms()});
+  r.nav = build_nav_map(r.voxels, r.layers.floor_z_m, cloud.scanners, params.nav);
+  for (const auto& w : r.nav.warnings) r.warnings.push_back(w);
+  r.timings.push_back({"nav_map", sw.lap_ms()});
   r.cloud_map = std::move(cloud);
-  return r;
 }
 
 }  // namespace indoormap::layout

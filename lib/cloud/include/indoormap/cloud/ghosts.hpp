@@ -8,6 +8,7 @@
 // empty space. A voxel that holds a few points but that many rays passed through is not a surface.
 #include <Eigen/Core>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "indoormap/cloud/voxel.hpp"
@@ -42,5 +43,17 @@ struct GhostResult {
 /// are ignored. Does nothing when !params.enabled. Throws UsageError for invalid params.
 GhostResult remove_ghost_voxels(VoxelGrid& grid, const std::vector<Eigen::Vector3f>& points,
                                 const Eigen::Vector3d& scanner, const GhostParams& params = {});
+
+/// The points one scanner position saw (grid frame).
+struct RaySource {
+  std::span<const Eigen::Vector3f> points;
+  Eigen::Vector3d scanner = Eigen::Vector3d::Zero();
+};
+
+/// The same over several positions, each ray from the position its point came from; the pass
+/// counts add up over all sources and one stride (max_rays over all points) subsamples them.
+/// Sources with a non-finite scanner are skipped; none usable: nothing done (applied false).
+GhostResult remove_ghost_voxels_by_origin(VoxelGrid& grid, const std::vector<RaySource>& sources,
+                                const GhostParams& params = {});
 
 }  // namespace indoormap::cloud

@@ -11,15 +11,17 @@
 #include "indoormap/cloud/voxel.hpp"
 #include "indoormap/core/cloud.hpp"
 #include "indoormap/layout/layout.hpp"
+#include "indoormap/layout/nav_map.hpp"
 
 namespace indoormap::layout {
 
 struct MapParams {
   cloud::LevelParams level;
   cloud::VoxelParams voxel;
-  cloud::GhostParams ghosts;  ///< applied with exactly one known scanner
+  cloud::GhostParams ghosts;  ///< applied per origin (one scanner, or the cloud's origin spans)
   cloud::LayerParams layers;
   LayoutParams layout;
+  NavParams nav;  ///< the navigation map (robot.min_obstacle_height_m, robot.height_m, nav.*)
 };
 
 struct StageTime {
@@ -38,13 +40,24 @@ struct MapResult {
   Grid<std::uint8_t> walls;               ///< M_w: occupancy of the wall band
   Grid<std::uint8_t> furniture;           ///< M_f: occupancy of the furniture band
   LayoutResult layout;                    ///< M_r and the passage area
+  NavResult nav;                          ///< the robot's map (map.pgm): body band, evidence
   std::vector<StageTime> timings;
   std::vector<std::string> warnings;      ///< from every stage, in order
 };
 
 /// Runs the pipeline on a cloud in the input frame (metres, z up). Scanner positions in
-/// cloud.scanners are used as flood-fill seeds. Throws InputError / BudgetError on unusable data,
+/// cloud.scanners are used as flood-fill seeds of M_r and as ray origins of the navigation map. Throws InputError / BudgetError on unusable data,
 /// UsageError (naming the key) for invalid level / voxel / ghosts / layers parameters.
 MapResult make_map(PointCloud cloud, const MapParams& params);
+
+// The stages of make_map, for make_storey_maps (storeys.hpp), which levels and voxelises the
+// whole cloud once before it knows the storeys.
+/// Every parameter check of make_map (UsageError naming the key).
+void validate(const MapParams& params);
+/// Levels the cloud in place (estimate_level, rotate); "not levelled" goes to warnings.
+cloud::LevelResult level_cloud(PointCloud& cloud, const MapParams& params,
+                               std::vector<std::string>& warnings);
+/// Everything after voxelising: r.level, r.bounds and r.voxels set, `cloud` levelled (map frame).
+void map_voxelized(PointCloud cloud, const MapParams& params, MapResult& r);
 
 }  // namespace indoormap::layout

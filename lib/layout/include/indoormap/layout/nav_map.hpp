@@ -1,0 +1,76 @@
+#pragma once
+// The navigation map (map.pgm / map.yaml): what a robot on the floor collides with, and the free
+// space the scans give evidence of. Not in the paper, whose room layout M_r (layout.hpp) marks
+// the wall band below the ceiling, so that every door under a lintel is a wall there. M_r keeps
+// feeding the room border and the objects; the robot's map is this one. docs/pipeline.md,
+// "Navigation map".
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "indoormap/cloud/voxel.hpp"
+#include "indoormap/core/cell.hpp"
+#include "indoormap/core/grid.hpp"
+
+namespace indoormap::layout {
+
+struct NavParams {
+  /// The body band, above the floor: what lies between these heights is in the robot's way.
+  /// Below min_obstacle_height_m the robot drives over it (door sills, cables on the floor, the
+  /// floor's own noise at 5 cm voxels); above height_m it passes under (lintels, table tops of
+  /// high counters, lamps).
+  double min_obstacle_height_m = 0.1;
+  double height_m = 1.2;
+  /// An occupied cell's body-band column holds at least min_points points, or its occupied
+  /// voxels span at least min_column_m: a surface (table top) gives many points in one layer, a
+  /// leg or a wall stands over many layers; a stray return or a dangling cord seen from one side
+  /// gives a speck of one or two points in one or two voxels.
+  /// Or at least min_neighbours of its 8 neighbours hold body-band points too: a sparse surface
+  /// far from the scanner (one or two points per cell) is still a surface; a cord, or the veil of
+  /// mixed pixels at a door edge (a line of specks), has at most 2.
+  int min_points = 4;
+  double min_column_m = 0.2;
+  int min_neighbours = 3;
+  /// The floor counts as observed in a column with a point from floor_z - floor_tolerance_m up to
+  /// the body band.
+  double floor_tolerance_m = 0.1;
+  /// Closings (3x3 square) of the observed floor: far from a scanner the floor's returns thin out
+  /// into lines one or two cells apart. 0: off.
+  int floor_closing_cells = 1;
+  /// The floor's height per tile of floor_tile_m: the most frequent lowest layer of its columns
+  /// up to floor_max_offset_m above the floor found (and floor_tolerance_m below), when a quarter
+  /// of the tile's columns have one. A levelling residual of 0.3 degrees raises the floor 10 cm
+  /// across a 20 m building; the body band follows the floor.
+  double floor_max_offset_m = 0.2;
+  double floor_tile_m = 1.0;
+  /// Free space from rays: per scanner position, the map is cast in 2D along azimuth bins, each
+  /// to the farthest column in the bin that holds a point below height_m (floor or body band),
+  /// stopping at the first occupied cell. false: observed floor alone.
+  bool rays = true;
+  double max_range_m = 30.0;     ///< columns farther from the position cast no ray
+  double scanner_clear_m = 0.3;  ///< occupied cells this close to a position (its tripod) pass
+};
+
+/// Throws UsageError naming the key (robot.height_m, nav.min_points, ...).
+void validate(const NavParams& params);
+
+struct NavResult {
+  Grid<Cell> map;  ///< kWall (occupied), kFree, kUnknown; the grid of voxels.geometry2d()
+  double body_lo_m = 0.0, body_hi_m = 0.0;  ///< the body band, map-frame heights
+  std::int64_t cells_occupied = 0, cells_free = 0, cells_unknown = 0;
+  std::int64_t cells_floor_seen = 0;  ///< free cells whose floor holds points
+  std::int64_t cells_ray_free = 0;    ///< free cells known from rays alone
+  std::int64_t specks_dropped = 0;    ///< body-band columns with points below the evidence rule
+  std::size_t positions = 0;          ///< scanner positions used for rays
+  std::size_t rays = 0;
+  std::vector<std::string> warnings;
+};
+
+/// Builds the navigation map of one storey from its voxel grid (ghosts already cleared) and the
+/// floor height floor_z_m. scanners_map: positions in the map frame (any number, also none).
+NavResult build_nav_map(const cloud::VoxelGrid& voxels, double floor_z_m,
+                        const std::vector<Eigen::Vector3d>& scanners_map,
+                        const NavParams& params = {});
+
+}  // namespace indoormap::layout

@@ -1,0 +1,258 @@
+#include "indoormap/layout/nav_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <opencv2/imgproc.hpp>
+
+#include "indoormap/core/errors.hpp"
+
+namespace indoormap::layout {
+
+void validate(const NavParams& p) {
+  auto require = [](bool ok, const std::string& what) {
+    if (!ok) throw UsageError("invalid parameter " + what);
+  };
+  require(std::isfinite(p.min_obstacle_height_m) && p.min_obstacle_height_m >= 0,
+          "robot.min_obstacle_height_m: must be >= 0");
+  require(std::isfinite(p.height_m) && p.height_m > p.min_obstacle_height_m,
+          "robot.height_m: must be > robot.min_obstacle_height_m");
+  require(p.min_points >= 1, "nav.min_points: must be >= 1");
+  require(p.floor_closing_cells >= 0 && p.floor_closing_cells <= 10,
+          "nav.floor_closing_cells: must be in [0, 10]");
+  require(p.min_neighbours >= 0 && p.min_neighbours <= 8, "nav.min_neighbours: must be in [0, 8]");
+  require(std::isfinite(p.min_column_m) && p.min_column_m >= 0, "nav.min_column_m: must be >= 0");
+  require(std::isfinite(p.floor_tolerance_m) && p.floor_tolerance_m >= 0,
+          "nav.floor_tolerance_m: must be >= 0");
+  require(std::isfinite(p.floor_max_offset_m) && p.floor_max_offset_m >= 0,
+          "nav.floor_max_offset_m: must be >= 0");
+  require(std::isfinite(p.floor_tile_m) && p.floor_tile_m > 0, "nav.floor_tile_m: must be > 0");
+  require(std::isfinite(p.max_range_m) && p.max_range_m > 0, "nav.max_range_m: must be > 0");
+  require(std::isfinite(p.scanner_clear_m) && p.scanner_clear_m >= 0,
+          "nav.scanner_clear_m: must be >= 0");
+}
+
+namespace {
+
+// Per column: body-band points, lowest and highest occupied body layer, and whether the floor
+// (or anything below height_m) was seen there.
+struct Columns {
+  std::vector<std::uint32_t> points;
+  std::vector<std::int32_t> lo, hi;
+  std::vector<std::uint8_t> floor_seen, low_seen;
+};
+
+// The floor's layer per column as an offset from the global floor layer f0: per tile of
+// tile_cells, the most frequent lowest occupied layer of its columns within [f0 - below,
+// f0 + above], when at least a quarter of the tile's columns have one; else 0. A levelling
+// residual of 0.3 degrees raises the floor 10 cm across a 20 m building: with one floor height,
+// the far rooms' floors would lie in the body band.
+std::vector<std::int8_t> floor_offsets(const cloud::VoxelGrid& g, std::int64_t f0, int below,
+                                       int above, int tile_cells) {
+  const int w = static_cast<int>(g.nx), h = static_cast<int>(g.ny);
+  std::vector<std::int8_t> off(static_cast<std::size_t>(w) * h, 0);
+  std::vector<std::int8_t> lowest(off.size(), -128);
+  for (int d = -below; d <= above; ++d) {
+    const std::int64_t z = f0 + d;
+    if (z < 0 || z >= g.nz) continue;
+    const std::uint16_t* layer = g.counts.data() + g.index(0, 0, z);
+    for (std::size_t i = 0; i < off.size(); ++i)
+      if (layer[i] && lowest[i] == -128) lowest[i] = static_cast<std::int8_t>(d);
+  }
+  std::vector<int> hist(static_cast<std::size_t>(below + above + 1));
+  for (int r0 = 0; r0 < h; r0 += tile_cells)
+    for (int c0 = 0; c0 < w; c0 += tile_cells) {
+      std::fill(hist.begin(), hist.end(), 0);
+      int cells = 0;
+      for (int r = r0; r < std::min(h, r0 + tile_cells); ++r)
+        for (int c = c0; c < std::min(w, c0 + tile_cells); ++c, ++cells)
+          if (const int d = lowest[static_cast<std::size_t>(r) * w + c]; d != -128)
+            ++hist[static_cast<std::size_t>(d + below)];
+      const auto best = std::max_element(hist.begin(), hist.end());
+      if (4 * *best < cells) continue;
+      const auto d = static_cast<std::int8_t>(best - hist.begin() - below);
+      for (int r = r0; r < std::min(h, r0 + tile_cells); ++r)
+        for (int c = c0; c < std::min(w, c0 + tile_cells); ++c)
+          off[static_cast<std::size_t>(r) * w + c] = d;
+    }
+  return off;
+}
+
+// Layers relative to each column's floor: [floor_lo, body_lo) is floor, [body_lo, body_hi] body.
+Columns scan_columns(const cloud::VoxelGrid& g, std::int64_t floor_lo, std::int64_t body_lo,
+                     std::int64_t body_hi, const std::vector<std::int8_t>& off) {
+  const std::size_t n = static_cast<std::size_t>(g.layer_size());
+  Columns c{std::vector<std::uint32_t>(n, 0), std::vector<std::int32_t>(n, -1),
+            std::vector<std::int32_t>(n, -1), std::vector<std::uint8_t>(n, 0),
+            std::vector<std::uint8_t>(n, 0)};
+  const auto [dmin, dmax] = std::minmax_element(off.begin(), off.end());
+  const std::int64_t z0 = std::max<std::int64_t>(0, floor_lo + (n ? *dmin : 0));
+  const std::int64_t z1 = std::min<std::int64_t>(g.nz - 1, body_hi + (n ? *dmax : 0));
+  for (std::int64_t z = z0; z <= z1; ++z) {
+    const std::uint16_t* layer = g.counts.data() + g.index(0, 0, z);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint16_t k = layer[i];
+      if (!k) continue;
+      const std::int64_t zr = z - off[i];  // the layer as if the column's floor were f0
+      if (zr < floor_lo || zr > body_hi) continue;
+      c.low_seen[i] = 1;
+      if (zr < body_lo) {
+        c.floor_seen[i] = 1;
+        continue;
+      }
+      c.points[i] += k;
+      if (c.lo[i] < 0) c.lo[i] = static_cast<std::int32_t>(zr);
+      c.hi[i] = static_cast<std::int32_t>(zr);
+    }
+  }
+  return c;
+}
+
+// 2D rays from one position: per azimuth bin, to the farthest low-seen column of the bin,
+// stopping at the first occupied cell (outside the position's own clearance).
+std::size_t cast_from(const Eigen::Vector2d& s_cells, const std::vector<std::uint8_t>& low_seen,
+                      const Grid<std::uint8_t>& occupied, double max_range_cells,
+                      double clear_cells, std::vector<std::uint8_t>& crossed) {
+  const int w = occupied.width, h = occupied.height;
+  double r_max = 0.0;
+  const int c0 = std::max(0, static_cast<int>(std::floor(s_cells.x() - max_range_cells)));
+  const int c1 = std::min(w - 1, static_cast<int>(std::ceil(s_cells.x() + max_range_cells)));
+  const int r0 = std::max(0, static_cast<int>(std::floor(s_cells.y() - max_range_cells)));
+  const int r1 = std::min(h - 1, static_cast<int>(std::ceil(s_cells.y() + max_range_cells)));
+  if (c0 > c1 || r0 > r1) return 0;
+  for (int r = r0; r <= r1; ++r)
+    for (int c = c0; c <= c1; ++c)
+      if (low_seen[static_cast<std::size_t>(r) * w + c])
+        r_max = std::max(r_max, std::hypot(c + 0.5 - s_cells.x(), r + 0.5 - s_cells.y()));
+  r_max = std::min(r_max, max_range_cells);
+  if (r_max < 1.0) return 0;
+  // Bins half a cell wide at the farthest range, so neighbouring rays leave no cell out.
+  const int bins =
+      std::clamp(static_cast<int>(std::ceil(4.0 * std::numbers::pi * r_max)), 64, 1 << 16);
+  std::vector<float> reach(static_cast<std::size_t>(bins), 0.0f);
+  const double to_bin = bins / (2.0 * std::numbers::pi);
+  for (int r = r0; r <= r1; ++r)
+    for (int c = c0; c <= c1; ++c) {
+      if (!low_seen[static_cast<std::size_t>(r) * w + c]) continue;
+      const double dx = c + 0.5 - s_cells.x(), dy = r + 0.5 - s_cells.y();
+      const double d = std::hypot(dx, dy);
+      if (d > r_max) continue;
+      double a = std::atan2(dy, dx);
+      if (a < 0) a += 2.0 * std::numbers::pi;
+      const int b = std::min(bins - 1, static_cast<int>(a * to_bin));
+      reach[static_cast<std::size_t>(b)] =
+          std::max(reach[static_cast<std::size_t>(b)], static_cast<float>(d));
+    }
+  std::size_t rays = 0;
+  for (int b = 0; b < bins; ++b) {
+    const double len = reach[static_cast<std::size_t>(b)];
+    if (len <= 0.0) continue;
+    ++rays;
+    const double a = (b + 0.5) / to_bin;
+    const double dx = std::cos(a), dy = std::sin(a);
+    // Walk in steps of a quarter cell: simple, and it visits every cell a ray crosses but for
+    // corner grazes (the neighbouring bins cover those).
+    const int steps = static_cast<int>(len * 4.0);
+    int last = -1;
+    for (int k = 0; k <= steps; ++k) {
+      const double t = k * 0.25;
+      const int c = static_cast<int>(std::floor(s_cells.x() + t * dx));
+      const int r = static_cast<int>(std::floor(s_cells.y() + t * dy));
+      if (c < 0 || r < 0 || c >= w || r >= h) break;
+      const int idx = r * w + c;
+      if (idx == last) continue;
+      last = idx;
+      if (occupied.data[static_cast<std::size_t>(idx)] && t > clear_cells) break;
+      crossed[static_cast<std::size_t>(idx)] = 1;
+    }
+  }
+  return rays;
+}
+
+}  // namespace
+
+NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
+                        const std::vector<Eigen::Vector3d>& scanners, const NavParams& p) {
+  validate(p);
+  NavResult r;
+  const GridGeometry geo = g.geometry2d();
+  const int w = geo.width(), h = geo.height();
+  r.map = Grid<Cell>(w, h, Cell::kUnknown);
+  r.body_lo_m = floor_z_m + p.min_obstacle_height_m;
+  r.body_hi_m = floor_z_m + p.height_m;
+  if (w == 0 || h == 0 || g.nz == 0) return r;
+  const std::int64_t floor_lo = g.layer_of(floor_z_m - p.floor_tolerance_m);
+  const std::int64_t body_lo = g.layer_of(r.body_lo_m);
+  const std::int64_t body_hi = g.layer_of(r.body_hi_m) - 1;  // layers wholly below height_m
+  const std::int64_t f0 = g.layer_of(floor_z_m);
+  const auto off = floor_offsets(
+      g, f0, static_cast<int>(std::lround(g.to_cells(p.floor_tolerance_m))),
+      std::clamp(static_cast<int>(std::lround(g.to_cells(p.floor_max_offset_m))), 0, 100),
+      std::max(1, static_cast<int>(std::lround(g.to_cells(p.floor_tile_m)))));
+  const Columns col = scan_columns(g, floor_lo, body_lo, body_hi, off);
+  const auto min_span =
+      static_cast<std::int32_t>(std::max(1L, std::lround(g.to_cells(p.min_column_m))));
+  Grid<std::uint8_t> occupied(w, h, 0);
+  for (int row = 0; row < h; ++row)
+    for (int c = 0; c < w; ++c) {
+      const std::size_t i = static_cast<std::size_t>(row) * w + c;
+      if (col.lo[i] < 0) continue;
+      // Part of a surface: at least min_neighbours of the 8 neighbours hold body-band points.
+      int nb = 0;
+      for (int dr = -1; dr <= 1; ++dr)
+        for (int dc = -1; dc <= 1; ++dc)
+          if ((dr || dc) && occupied.contains(c + dc, row + dr) &&
+              col.lo[static_cast<std::size_t>(row + dr) * w + c + dc] >= 0)
+            ++nb;
+      const bool ok = col.points[i] >= static_cast<std::uint32_t>(p.min_points) ||
+                      col.hi[i] - col.lo[i] + 1 >= min_span || nb >= p.min_neighbours;
+      occupied.data[i] = ok;
+      r.specks_dropped += !ok;
+    }
+  // Far from a scanner the floor's returns thin out into lines with gaps of a cell or two: close
+  // them (a square closing of floor_closing_cells), never across an occupied cell.
+  std::vector<std::uint8_t> floor_seen = col.floor_seen;
+  if (p.floor_closing_cells > 0) {
+    Grid<std::uint8_t> f(w, h, 0);
+    f.data = floor_seen;
+    cv::Mat m(h, w, CV_8U, f.data.data());
+    const cv::Mat square = cv::getStructuringElement(cv::MORPH_RECT, {3, 3});
+    cv::morphologyEx(m, m, cv::MORPH_CLOSE, square, {-1, -1}, p.floor_closing_cells);
+    for (std::size_t i = 0; i < floor_seen.size(); ++i)
+      floor_seen[i] = f.data[i] && !occupied.data[i];
+  }
+  std::vector<std::uint8_t> crossed(occupied.size(), 0);
+  if (p.rays) {
+    for (const auto& s : scanners) {
+      const Eigen::Vector3d v = g.to_voxel_coords(s);
+      if (!v.allFinite()) continue;
+      ++r.positions;
+      r.rays += cast_from(v.head<2>(), col.low_seen, occupied, g.to_cells(p.max_range_m),
+                          g.to_cells(p.scanner_clear_m), crossed);
+    }
+  }
+  if (r.positions == 0)
+    r.warnings.push_back(
+        "no scanner position known: the navigation map's free space comes from the observed "
+        "floor alone (give --scanner or --trajectory for ray evidence)");
+  for (std::size_t i = 0; i < occupied.size(); ++i) {
+    Cell c = Cell::kUnknown;
+    if (occupied.data[i]) {
+      c = Cell::kWall;
+      ++r.cells_occupied;
+    } else if (floor_seen[i] || crossed[i]) {
+      c = Cell::kFree;
+      ++r.cells_free;
+      if (floor_seen[i])
+        ++r.cells_floor_seen;
+      else
+        ++r.cells_ray_free;
+    } else {
+      ++r.cells_unknown;
+    }
+    r.map.data[i] = c;
+  }
+  return r;
+}
+
+}  // namespace indoormap::layout

@@ -1,0 +1,264 @@
+// Whole floors (issue 15): pcd-to-map's navigation map on a simulated 4-room building and the
+// default office, run as a user runs it. App-level, over 1 s: labelled slow.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgproc.hpp>
+#include <sstream>
+
+#include "indoormap/cloud_io/load.hpp"
+#include "indoormap/cloud_io/write.hpp"
+#include "map_yaml.hpp"
+#include "test_support.hpp"
+
+using namespace indoormap;
+using nlohmann::json;
+using test::run_app;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+json read_json(const fs::path& p) {
+  std::ifstream in(p);
+  return json::parse(in);
+}
+
+// The robot's configuration space of map.yaml: free cells whose centre lies at least radius_m
+// from the centre of every cell that is not free (unknown counts as blocked), 4-connected
+// components labelled.
+struct CSpace {
+  formats::RosMap map;
+  cv::Mat labels;
+  int label_at(const Eigen::Vector2d& p_m, double search_m) const {
+    const CellIndex c = map.geometry.cell_of(p_m);
+    const int r = static_cast<int>(std::ceil(search_m / map.geometry.cell_m()));
+    for (int d = 0; d <= r; ++d)  // nearest labelled cell, ring by ring
+      for (int dr = -d; dr <= d; ++dr)
+        for (int dc = -d; dc <= d; ++dc) {
+          const int col = c.col + dc, row = c.row + dr;
+          if (col < 0 || row < 0 || col >= labels.cols || row >= labels.rows) continue;
+          if (const int l = labels.at<int>(row, col); l > 0) return l;
+        }
+    return 0;
+  }
+};
+
+CSpace cspace(const fs::path& yaml, double radius_m) {
+  CSpace s{app::read_ros_map(yaml), {}};
+  const auto& g = s.map.cells;
+  cv::Mat free(g.height, g.width, CV_8U);
+  for (int r = 0; r < g.height; ++r)
+    for (int c = 0; c < g.width; ++c) free.at<std::uint8_t>(r, c) = g.at(c, r) == Cell::kFree;
+  cv::Mat dist, ok;
+  cv::distanceTransform(free, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  // At least radius_m between the robot's centre cell and the centre of any cell not free.
+  cv::threshold(dist, ok, radius_m / s.map.geometry.cell_m() - 1e-3, 255, cv::THRESH_BINARY);
+  ok.convertTo(ok, CV_8U);
+  cv::connectedComponents(ok, s.labels, 4, CV_32S);
+  return s;
+}
+
+struct Figures {
+  int doors = 0, doors_open = 0;
+  int positions = 0;
+  bool all_reachable = true;
+};
+
+// Doors open for a 0.4 m robot (a configuration-space cell within 0.15 m of the door's centre)
+// and every scanner position reachable from every other.
+Figures figures(const fs::path& result, const json& truth) {
+  const CSpace s = cspace(result / "map.yaml", 0.2);
+  Figures f;
+  for (const auto& room : truth["rooms"])
+    for (const auto& d : room.value("doors", json::array())) {
+      ++f.doors;
+      f.doors_open +=
+          s.label_at(Eigen::Vector2d(d["center"][0].get<double>(), d["center"][1].get<double>()),
+                     0.15) > 0;
+    }
+  int first = -1;
+  const json summary = read_json(result / "summary.json");
+  for (const auto& p : summary["scanners_map_m"]) {
+    ++f.positions;
+    const int l = s.label_at(Eigen::Vector2d(p[0].get<double>(), p[1].get<double>()), 0.5);
+    if (first < 0) first = l;
+    f.all_reachable = f.all_reachable && l > 0 && l == first;
+  }
+  return f;
+}
+
+fs::path building4() {  // one scene for every test of this file: 4 rooms and a corridor
+  static const fs::path dir = [] {
+    // Not under scratch_dir (each call clears the test's directory): one per process.
+    const fs::path d = fs::temp_directory_path() / "indoormap-tests" /
+                       ("floors_building4_" + std::to_string(::getpid()));
+    fs::remove_all(d);
+    const auto r = run_app("scene-sim",
+                           "--random --rooms 4 --seed 1 --step-deg 0.5 --3dtk -q -o " + d.string());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return d;
+  }();
+  return dir;
+}
+
+std::string scanner_options(const json& truth) {
+  std::ostringstream s;
+  for (const auto& sc : truth["scanners"])
+    s << " --scanner " << sc["position_cloud_m"][0].get<double>() << ","
+      << sc["position_cloud_m"][1].get<double>() << "," << sc["position_cloud_m"][2].get<double>();
+  return s.str();
+}
+
+}  // namespace
+
+TEST(FloorsApp, FourRoomsFrom3dtkAndFromTheMergedCloud) {
+  const fs::path in = building4();
+  const json truth = read_json(in / "ground_truth.json");
+  const fs::path out = test::scratch_dir();
+  const auto a =
+      run_app("pcd-to-map", (in / "3dtk").string() + " -q -o " + (out / "3dtk").string());
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  const auto b = run_app("pcd-to-map", (in / "cloud.pcd").string() + scanner_options(truth) +
+                                           " -q -o " + (out / "merged").string());
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  EXPECT_NE(b.err.find("ghost filter skipped: 5 scanner positions"), std::string::npos) << b.err;
+  for (const char* run : {"3dtk", "merged"}) {
+    const Figures f = figures(out / run, truth);
+    SCOPED_TRACE(run);
+    EXPECT_EQ(f.positions, 5);
+    EXPECT_GE(f.doors, 4);
+    EXPECT_GE(f.doors_open, 0.95 * f.doors) << f.doors_open << " of " << f.doors;
+    EXPECT_TRUE(f.all_reachable);
+  }
+  EXPECT_TRUE(read_json(out / "3dtk" / "summary.json")["ghosts"]["applied"].get<bool>())
+      << "3DTK: the ghost filter runs per scan";
+}
+
+// Two storeys: the 4-room building and a copy of it one storey up (a slab 0.3 m thick between
+// the lower ceiling and the upper floor), merged into one cloud, every position by --scanner.
+TEST(FloorsApp, TwoStoreysEachMappedOnItsOwn) {
+  const fs::path in = building4();
+  const json truth = read_json(in / "ground_truth.json");
+  double ceiling = 0.0;  // the highest ceiling of every room and the corridor
+  for (const auto& room : truth["rooms"])
+    ceiling = std::max(ceiling, room["ceiling"]["max_z_m"].get<double>());
+  const double up = ceiling + 0.3;
+  auto cloud = cloud_io::load_cloud((in / "cloud.pcd").string()).cloud;
+  const std::size_t n = cloud.points.size();
+  cloud.points.reserve(2 * n);
+  for (std::size_t i = 0; i < n; ++i)
+    cloud.points.push_back(cloud.points[i] + Eigen::Vector3f(0, 0, static_cast<float>(up)));
+  const fs::path dir = test::scratch_dir();
+  cloud_io::write_pcd_binary((dir / "two.pcd").string(), cloud.points);
+  std::ostringstream sc;
+  for (const auto& s : truth["scanners"])
+    for (double dz : {0.0, up})
+      sc << " --scanner " << s["position_cloud_m"][0].get<double>() << ","
+         << s["position_cloud_m"][1].get<double>() << ","
+         << s["position_cloud_m"][2].get<double>() + dz;
+  const auto r = run_app(
+      "pcd-to-map", (dir / "two.pcd").string() + sc.str() + " -q -o " + (dir / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json top = read_json(dir / "out" / "summary.json");
+  ASSERT_EQ(top["storeys"].size(), 2u) << top.dump(1);
+  for (int k = 0; k < 2; ++k) {
+    SCOPED_TRACE("storey " + std::to_string(k));
+    const fs::path sub = dir / "out" / ("storey_" + std::to_string(k));
+    const json s = read_json(sub / "summary.json");
+    EXPECT_EQ(s["storey"].get<int>(), k);
+    EXPECT_NEAR(s["floor_z_m"].get<double>(), k * up, 0.05) << "within one cell";
+    const Figures f = figures(sub, truth);
+    EXPECT_EQ(f.positions, 5);
+    EXPECT_GE(f.doors_open, 0.95 * f.doors) << f.doors_open << " of " << f.doors;
+    EXPECT_TRUE(f.all_reachable);
+  }
+}
+
+TEST(FloorsApp, OfficeLampsAreNoObstaclesTablesAndChairsAre) {
+  const fs::path office = fs::path(INDOORMAP_SOURCE_DIR) / "clouds" / "office";
+  const fs::path out = test::scratch_dir() / "office";
+  const auto r = run_app("pcd-to-map", (office / "cloud.pcd").string() + " -q -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto map = app::read_ros_map(out / "map.yaml");
+  const json truth = read_json(office / "ground_truth.json");
+  auto occupied_in = [&](double x0, double y0, double x1, double y1) {
+    int n = 0;
+    for (double y = y0; y <= y1; y += 0.05)
+      for (double x = x0; x <= x1; x += 0.05) {
+        const CellIndex c = map.geometry.cell_of({x, y});
+        n += map.geometry.contains(c) && map.cells.at(c) == Cell::kWall;
+      }
+    return n;
+  };
+  for (const auto& o : truth["furniture"]) {
+    const auto& fp = o["footprint"];
+    double x0 = 1e9, y0 = 1e9, x1 = -1e9, y1 = -1e9;
+    for (const auto& p : fp) {
+      x0 = std::min(x0, p[0].get<double>()), x1 = std::max(x1, p[0].get<double>());
+      y0 = std::min(y0, p[1].get<double>()), y1 = std::max(y1, p[1].get<double>());
+    }
+    const std::string type = o["type"];
+    SCOPED_TRACE(o["id"].get<std::string>());
+    const std::string id = o["id"];
+    if (id == "lamp_2" || id == "lamp_4") {  // hanging at 2.34 m over free floor: no obstacle
+      EXPECT_EQ(occupied_in(x0, y0, x1, y1), 0);
+    } else if (type == "table" || type == "chair" || type == "desk") {
+      EXPECT_GT(occupied_in(x0 + 0.1, y0 + 0.1, x1 - 0.1, y1 - 0.1), 0);
+    }
+  }
+}
+
+// Bad positions and storeys: a clear error naming the file and line, exit 2, nothing written.
+TEST(FloorsApp, BadTrajectoriesAndStoreysAreRefused) {
+  const fs::path office = fs::path(INDOORMAP_SOURCE_DIR) / "clouds" / "office" / "cloud.pcd";
+  const fs::path dir = test::scratch_dir() / "bad";
+  fs::create_directories(dir);
+  struct Case {
+    std::string text, message;
+  };
+  const Case cases[] = {
+      {"0 1 2 1.4 0 0 0 1\n0.5 1 two 1.4 0 0 0 1\n", "t.txt:2: column 3: 'two' is not a finite"},
+      {"1 2 1.4\n1 2\n", "t.txt:2: expected 8 columns 't x y z qx qy qz qw' (TUM) or 3 'x y z'"},
+      {"0 1 2 1.4 0 0 0.5 0.5\n", "t.txt:1: quaternion (qx qy qz qw) has norm 0.707107"},
+      {"1 2 1.4\n40 2 1.4\n",
+       "t.txt:2: position (40.000, 2.000, 1.400) lies more than 1 m outside"},
+  };
+  for (const auto& c : cases) {
+    test::write_text(dir / "t.txt", c.text);
+    const fs::path out = dir / "out";
+    const auto r = run_app("pcd-to-map", office.string() + " --trajectory " +
+                                             (dir / "t.txt").string() + " -q -o " + out.string());
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out / "summary.json"));
+  }
+  const auto r =
+      run_app("pcd-to-map", office.string() + " --storey 1 -q -o " + (dir / "s").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--storey 1: the cloud has 1 storey (0)"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "s" / "summary.json"));
+}
+
+// The Jacobs lab: one storey, and its door to the corridor open in map.pgm: the corridor 1.5 m
+// beyond the door is reachable from the scanner for a 0.4 m robot (M_r and the room border are
+// those of test_pcd_to_map / test_border_*, unchanged).
+TEST(FloorsApp, JacobsOneStoreyDoorToTheCorridorOpen) {
+  const auto data = test::shared_data_dir();
+  if (!data || !fs::exists(*data / "jacobs-thermocolorlab"))
+    GTEST_SKIP() << "shared data not found (../shared/data or $INDOORMAP_DATA)";
+  const fs::path out = test::scratch_dir();
+  const auto r =
+      run_app("pcd-to-map", (*data / "jacobs-thermocolorlab").string() + " -q -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json s = read_json(out / "summary.json");
+  ASSERT_EQ(s["storeys"].size(), 1u);
+  EXPECT_FALSE(fs::exists(out / "storey_0"));
+  const CSpace c = cspace(out / "map.yaml", 0.2);
+  const auto& sc = s["scanners_map_m"][0];
+  const int at_scanner = c.label_at(Eigen::Vector2d(sc[0].get<double>(), sc[1].get<double>()), 0.5);
+  EXPECT_GT(at_scanner, 0);
+  EXPECT_EQ(c.label_at(Eigen::Vector2d(4.2, -2.8), 0.1), at_scanner) << "the corridor";
+}

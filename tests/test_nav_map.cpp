@@ -1,0 +1,119 @@
+// The navigation map (body band, speck rule, free space from evidence) and the storeys, on small
+// hand-built voxel grids.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "indoormap/core/errors.hpp"
+#include "indoormap/layout/nav_map.hpp"
+#include "indoormap/layout/storeys.hpp"
+
+using namespace indoormap;
+using namespace indoormap::layout;
+
+namespace {
+
+// 40 x 20 cells of 0.1 m, 30 layers of 0.1 m; floor at z 0.05 (layer 0).
+cloud::VoxelGrid room() {
+  cloud::VoxelGrid g;
+  g.cell_m = 0.1;
+  g.nx = 40;
+  g.ny = 20;
+  g.nz = 30;
+  g.counts.assign(static_cast<std::size_t>(g.voxel_count()), 0);
+  return g;
+}
+
+void put(cloud::VoxelGrid& g, int x, int y, int z, std::uint16_t n = 5) {
+  g.counts[static_cast<std::size_t>(g.index(x, y, z))] = n;
+}
+
+Cell at(const NavResult& r, int c, int row) {
+  return r.map.at(c, row);
+}
+
+}  // namespace
+
+// A wall at x = 2.0 m with a door (rows 8-11) under a lintel at 2.0 m; left of the wall the
+// floor is seen; a cord speck, a table leg and a sparse table top in the left room.
+TEST(NavMap, BodyBandSpecksAndDoorUnderLintel) {
+  auto g = room();
+  for (int y = 0; y < 20; ++y)
+    for (int x = 0; x < 20; ++x) put(g, x, y, 0);  // floor, left room only
+  for (int y = 0; y < 20; ++y)
+    for (int z = 0; z < 30; ++z)
+      if (y < 8 || y > 11 || z >= 20) put(g, 20, y, z);  // wall with a door below 2.0 m
+  put(g, 5, 5, 8, 1);                                    // a cord's speck at 0.85 m
+  for (int z = 1; z < 7; ++z) put(g, 10, 15, z, 1);      // a table leg, one point per voxel
+  for (int x = 14; x < 17; ++x)
+    for (int y = 2; y < 5; ++y) put(g, x, y, 7, 1);  // a sparse table top at 0.75 m
+  NavParams p;
+  const NavResult none = build_nav_map(g, 0.05, {}, p);
+  EXPECT_EQ(at(none, 5, 5), Cell::kFree) << "the speck is no obstacle";
+  EXPECT_EQ(at(none, 10, 15), Cell::kWall) << "the leg stands over 0.6 m";
+  EXPECT_EQ(at(none, 15, 3), Cell::kWall) << "the table top is a surface";
+  EXPECT_EQ(at(none, 14, 2), Cell::kWall);
+  EXPECT_EQ(at(none, 20, 3), Cell::kWall);
+  EXPECT_EQ(at(none, 20, 9), Cell::kUnknown) << "door: nothing in the body band, floor unseen";
+  EXPECT_EQ(at(none, 30, 9), Cell::kUnknown) << "no scanner: the right room's floor is unseen";
+  EXPECT_EQ(none.specks_dropped, 1);
+  ASSERT_EQ(none.warnings.size(), 1u);
+  EXPECT_NE(none.warnings[0].find("observed floor alone"), std::string::npos);
+
+  // A point on the far wall (x = 3.9 m) seen through the door: the ray from a scanner at
+  // (1.0, 1.0, 1.2) crosses the door and the right room's floor.
+  for (int z = 0; z < 25; ++z) put(g, 39, 10, z);
+  const NavResult rays = build_nav_map(g, 0.05, {{1.05, 1.05, 1.2}}, p);
+  EXPECT_TRUE(rays.warnings.empty());
+  EXPECT_EQ(rays.positions, 1u);
+  EXPECT_EQ(at(rays, 20, 10), Cell::kFree) << "the door is open";
+  EXPECT_EQ(at(rays, 30, 10), Cell::kFree) << "crossed by the ray through the door";
+  EXPECT_EQ(at(rays, 30, 3), Cell::kUnknown) << "behind the wall: no evidence";
+  EXPECT_EQ(at(rays, 39, 10), Cell::kWall);
+  EXPECT_GT(rays.cells_ray_free, 0);
+}
+
+TEST(NavMap, ParametersAreValidated) {
+  auto g = room();
+  NavParams p;
+  p.height_m = 0.05;
+  EXPECT_THROW(build_nav_map(g, 0.0, {}, p), UsageError);
+  p = {};
+  p.min_neighbours = 9;
+  EXPECT_THROW(validate(p), UsageError);
+}
+
+// Occupied cells per layer of a two-storey building: floors at layers 2 and 32, ceilings at
+// 27 and 57, a slab 28-31 where nothing is seen, walls (5 cells) in every other layer.
+TEST(Storeys, TwoStoreysFromTheSurfaceHistogram) {
+  VoxelGeometry g;
+  g.cell_m = 0.1;
+  g.nx = g.ny = 10;
+  g.nz = 60;
+  std::vector<std::int64_t> occ(60, 5);
+  occ[2] = occ[27] = occ[32] = occ[57] = 100;
+  for (int z = 28; z < 32; ++z) occ[z] = 1;  // inside the slab: next to nothing
+  occ[9] = 20;  // table tops: not a surface at 0.3 of the fullest layer
+  const auto s = detect_storeys(occ, g);
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_NEAR(s[0].floor_z_m, 0.25, 1e-9);
+  EXPECT_NEAR(s[0].ceiling_z_m, 2.75, 1e-9);
+  EXPECT_NEAR(s[1].floor_z_m, 3.25, 1e-9);
+  EXPECT_NEAR(s[1].ceiling_z_m, 5.75, 1e-9);
+  EXPECT_NEAR(s[0].hi_z_m, 3.0, 1e-9);  // the middle of the slab
+  EXPECT_NEAR(s[1].lo_z_m, 3.0, 1e-9);
+
+  // One room, its walls in every layer: no slab. A gap too thin, or with too little above it,
+  // is no slab either.
+  std::vector<std::int64_t> one(40, 5);
+  one[1] = one[27] = one[31] = 100;
+  one[29] = 0;  // one empty layer: thinner than min_slab_m (0.1 m = 1 layer here: make it 0.2)
+  StoreyParams thick;
+  thick.min_slab_m = 0.2;
+  EXPECT_EQ(detect_storeys(one, VoxelGeometry{{0, 0, 0}, 0.1, 10, 10, 40}, thick).size(), 1u);
+  EXPECT_EQ(detect_storeys(one, VoxelGeometry{{0, 0, 0}, 0.1, 10, 10, 40}).size(), 1u)
+      << "10 layers above the gap: less than min_height_m";
+  StoreyParams off;
+  off.enabled = false;
+  EXPECT_EQ(detect_storeys(occ, g, off).size(), 1u);
+}
