@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "indoormap/core/errors.hpp"
-#include "indoormap/formats/tum_trajectory.hpp"
+#include "indoormap/formats/trajectory.hpp"
 #include "indoormap/sim/building.hpp"
 #include "indoormap/sim/floor_scene.hpp"
 #include "indoormap/sim/ground_truth.hpp"
@@ -166,13 +166,14 @@ TEST(SimMobile, DeterministicAndTheTrajectoryReadsBack) {
   const auto traj = trajectory(s.scanners, s.tilt, mp.speed_m_s);
   const fs::path f = test::scratch_dir() / "trajectory.txt";
   formats::write_tum_trajectory(f, traj);
-  const auto back = formats::read_tum_trajectory(f);
-  ASSERT_EQ(back.size(), traj.size());
-  for (std::size_t i = 0; i < back.size(); ++i) {
-    EXPECT_NEAR((back[i].position_m - a.scanner_positions_m[i]).norm(), 0, 1e-6);
-    EXPECT_NEAR(back[i].orientation.norm(), 1.0, 1e-6);
+  const auto back = formats::read_trajectory(f);
+  EXPECT_EQ(back.format, formats::TrajectoryFormat::kTum);
+  ASSERT_EQ(back.positions.size(), traj.size());
+  for (std::size_t i = 0; i < back.positions.size(); ++i) {
+    EXPECT_NEAR((back.positions[i] - a.scanner_positions_m[i]).norm(), 0, 1e-6);
+    EXPECT_NEAR(traj[i].orientation.norm(), 1.0, 1e-6);
     if (i > 0) {
-      EXPECT_GT(back[i].t_s, back[i - 1].t_s);
+      EXPECT_GT(traj[i].t_s, traj[i - 1].t_s);
     }
   }
   // Each line has 8 columns; bad lines are errors naming the line.
@@ -188,7 +189,7 @@ TEST(SimMobile, DeterministicAndTheTrajectoryReadsBack) {
   for (const char* bad :
        {"0 1 2 3 0 0 0 1\n0 1 2 x 0 0 0 1\n", "0 1 2 3 0 0 1\n", "0 1 2 3 0 0 0 2\n"}) {
     test::write_text(f, bad);
-    EXPECT_THROW(formats::read_tum_trajectory(f), InputError) << bad;
+    EXPECT_THROW(formats::read_trajectory(f), InputError) << bad;
   }
 }
 

@@ -9,7 +9,7 @@
 #include "indoormap/formats/json.hpp"
 #include "indoormap/formats/pgm.hpp"
 #include "indoormap/formats/ros_map.hpp"
-#include "indoormap/formats/tum_trajectory.hpp"
+#include "indoormap/formats/trajectory.hpp"
 #include "indoormap/sim/world.hpp"
 
 namespace indoormap::scene_sim {

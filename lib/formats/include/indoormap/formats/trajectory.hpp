@@ -12,6 +12,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "indoormap/sim/mobile.hpp"
+
 namespace indoormap::formats {
 
 inline constexpr double kQuaternionNormTolerance = 1e-3;
@@ -28,5 +30,10 @@ struct Trajectory {
 /// number, a line of another column count than 3 or 8 (or than the file's first pose line), a
 /// TUM quaternion off unit norm; and for a missing, unreadable or empty file (no pose line).
 Trajectory read_trajectory(const std::filesystem::path& path);
+
+/// Writes poses in the TUM format above (9 significant digits, a header comment naming the
+/// frame), atomically: scene-sim's trajectory.txt, which read_trajectory reads back.
+void write_tum_trajectory(const std::filesystem::path& path,
+                          const std::vector<sim::TrajectoryPose>& poses);
 
 }  // namespace indoormap::formats
