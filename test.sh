@@ -12,7 +12,7 @@
 #                (scripts/fuzz.sh: INDOORMAP_FUZZ_BUDGET, default 900 s, for all, two at a
 #                time, 50,000 executions at least).
 # The same through the environment: INDOORMAP_TEST_SANITIZE=1, INDOORMAP_TEST_FUZZ=1.
-# .ci/run uses all three with a 450 s fuzz budget. Every stage prints its duration, and the last
+# .ci/run uses all three with a 300 s fuzz budget. Every stage prints its duration, and the last
 # lines list them all (CI's times: docs/robustness.md, "CI stages and their times").
 set -euo pipefail
 cd "$(dirname "$0")"
