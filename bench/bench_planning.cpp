@@ -28,7 +28,8 @@ Scene synthetic(int n) {
   for (int c = 0; c < n; ++c) s.layout.at(c, 0) = s.layout.at(c, n - 1) = Cell::kWall;
   for (int r = 0; r < n; ++r) s.layout.at(0, r) = s.layout.at(n - 1, r) = Cell::kWall;
   for (int b = 0; b < n * n / 4000; ++b) {
-    const int c0 = 20 + static_cast<int>(rng() % (n - 60)), r0 = 20 + static_cast<int>(rng() % (n - 60));
+    const int c0 = 20 + static_cast<int>(rng() % (n - 60)),
+              r0 = 20 + static_cast<int>(rng() % (n - 60));
     for (int r = r0; r < r0 + 12; ++r)
       for (int c = c0; c < c0 + 12; ++c) s.layout.at(c, r) = Cell::kFurniture;
   }
@@ -39,7 +40,8 @@ Scene synthetic(int n) {
 
 const Scene& jacobs() {
   static const Scene s = [] {
-    const auto dir = std::filesystem::path(INDOORMAP_SOURCE_DIR) / ".." / "shared" / "data" / "jacobs-thermocolorlab";
+    const auto dir = std::filesystem::path(INDOORMAP_SOURCE_DIR) / ".." / "shared" / "data" /
+                     "jacobs-thermocolorlab";
     if (!std::filesystem::exists(dir)) return synthetic(200);
     auto loaded = cloud_io::load_clouds({dir.string()}, {});
     const auto m = layout::make_map(std::move(loaded.cloud), {});
@@ -53,7 +55,9 @@ const Scene& big() {
   return s;
 }
 
-const Scene& scene(int which) { return which == 0 ? jacobs() : big(); }
+const Scene& scene(int which) {
+  return which == 0 ? jacobs() : big();
+}
 
 const PlannerParams kParams;
 const RobotParams kRobot;
@@ -110,6 +114,11 @@ BENCHMARK(BM_NeighbourhoodTemplate)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SafeZoneLayout)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Wave)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Region)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Scenario)->Args({0, 0})->Args({0, 1})->Args({1, 0})->Args({1, 1})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Scenario)
+    ->Args({0, 0})
+    ->Args({0, 1})
+    ->Args({1, 0})
+    ->Args({1, 1})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_WholePlanning)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();

@@ -159,7 +159,8 @@ TEST(MapEval, TwoStoreyTruthEvaluatedPerStorey) {
   const fs::path dir = test::scratch_dir();
   const fs::path sim = dir / "sim", res = dir / "result";
   auto r = test::run_app(
-      "scene-sim", "--random --seed 2 --rooms 2 --storeys 2 --step-deg 3 --truth-cell 0.1 -q -o " + sim.string());
+      "scene-sim", "--random --seed 2 --rooms 2 --storeys 2 --step-deg 3 --truth-cell 0.1 -q -o " +
+                       sim.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   // The result: per storey the truth itself as layout and as navigation map (walls and
   // furniture occupied), with the result floors 3 cm above the truth.

@@ -17,18 +17,23 @@ constexpr int kMaxScanNumber = 1'000'000;
 }  // namespace
 
 void add_pipeline_options(CLI::App& app, PipelineCli& cli) {
-  app.add_option("inputs", cli.inputs,
-                 "Point clouds: .pcd, .ply, .xyz/.txt, or a 3DTK scan directory (several are merged)");
+  app.add_option(
+      "inputs", cli.inputs,
+      "Point clouds: .pcd, .ply, .xyz/.txt, or a 3DTK scan directory (several are merged)");
   app.add_option("-o,--out", cli.out_dir, "Output directory (created if missing)");
   app.add_option("-c,--config", cli.config_file, "YAML parameters (see config/default.yaml)");
-  app.add_flag("--print-config", cli.print_config, "Print the effective parameters as YAML and exit");
-  app.add_flag("-q,--quiet", cli.quiet, "No progress or run report on stderr (warnings still shown)");
+  app.add_flag("--print-config", cli.print_config,
+               "Print the effective parameters as YAML and exit");
+  app.add_flag("-q,--quiet", cli.quiet,
+               "No progress or run report on stderr (warnings still shown)");
   app.add_option("--scans", cli.scans, "3DTK: scan numbers to read, e.g. 0-8 or 3");
   app.add_option("--up-axis", cli.up_axis, "Up axis of PCD/PLY/XYZ input: z (default) or y")
       ->check(CLI::IsMember({"z", "y"}));
-  app.add_option("--unit", cli.unit, "Unit of PCD/PLY/XYZ input: m (default), cm, mm, or metres per unit");
-  app.add_option("--scanner", cli.scanners,
-                 "Scanner position X,Y,Z in metres (input frame); repeat for several. Overrides file poses");
+  app.add_option("--unit", cli.unit,
+                 "Unit of PCD/PLY/XYZ input: m (default), cm, mm, or metres per unit");
+  app.add_option(
+      "--scanner", cli.scanners,
+      "Scanner position X,Y,Z in metres (input frame); repeat for several. Overrides file poses");
   app.add_option("--trajectory", cli.trajectory,
                  "Scanner positions from a file: TUM 't x y z qx qy qz qw' or 'x y z' lines "
                  "(metres, input frame); added to the others");
@@ -37,7 +42,8 @@ void add_pipeline_options(CLI::App& app, PipelineCli& cli) {
       ->check(CLI::NonNegativeNumber);
   app.add_option("--cell-m", cli.cell_m, "Voxel / map cell size in metres (voxel.cell_m)");
   app.add_flag("--no-level", cli.no_level, "Do not level the cloud (level.enabled: false)");
-  app.add_option("--start", cli.start, "Route start X,Y[,DEG] in the map frame (with --goal: route outputs)");
+  app.add_option("--start", cli.start,
+                 "Route start X,Y[,DEG] in the map frame (with --goal: route outputs)");
   app.add_option("--goal", cli.goal, "Route goal X,Y[,DEG] in the map frame (with --start)");
 }
 
@@ -79,10 +85,14 @@ PipelineConfig resolve_config(const PipelineCli& cli) {
   if (!cli.up_axis.empty())
     c.load.up_axis = cli.up_axis == "y" ? cloud_io::UpAxis::kY : cloud_io::UpAxis::kZ;
   if (!cli.unit.empty()) {
-    if (cli.unit == "m") c.load.unit_m = 1.0;
-    else if (cli.unit == "cm") c.load.unit_m = 0.01;
-    else if (cli.unit == "mm") c.load.unit_m = 0.001;
-    else c.load.unit_m = parse_number(cli.unit, "--unit");
+    if (cli.unit == "m")
+      c.load.unit_m = 1.0;
+    else if (cli.unit == "cm")
+      c.load.unit_m = 0.01;
+    else if (cli.unit == "mm")
+      c.load.unit_m = 0.001;
+    else
+      c.load.unit_m = parse_number(cli.unit, "--unit");
   }
   if (!cli.scans.empty()) {
     const auto dash = cli.scans.find('-');

@@ -208,9 +208,9 @@ void validate(const PipelineConfig& c) {
   cloud::validate(c.map.layers);
   layout::validate(c.map.layout);  // throws UsageError naming layout.<key>
   layout::validate(c.map.nav);
-  layout::validate(c.storeys);     // robot.min_obstacle_height_m, robot.height_m, nav.<key>
-  objects::validate(c.objects);    // objects.<key>
-  border::validate(c.border);      // throws UsageError naming border.<key>
+  layout::validate(c.storeys);   // robot.min_obstacle_height_m, robot.height_m, nav.<key>
+  objects::validate(c.objects);  // objects.<key>
+  border::validate(c.border);    // throws UsageError naming border.<key>
   validate(c.plan);
 }
 

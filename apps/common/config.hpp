@@ -26,7 +26,7 @@ struct PipelineConfig {
   layout::StoreyParams storeys;  ///< storeys.*
   objects::ObjectParams objects;
   border::BorderParams border;  ///< room border closure (border.*)
-  PlanConfig plan;  ///< robot.*, safe_zone.*, planner.*: the route of --start / --goal
+  PlanConfig plan;              ///< robot.*, safe_zone.*, planner.*: the route of --start / --goal
 };
 
 /// Reads a YAML file over the defaults. Throws InputError naming the file, key and line.

@@ -7,7 +7,6 @@
 #include <iostream>
 
 #include "cloud_hints.hpp"
-#include "scanner_positions.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/draw/layout_png.hpp"
@@ -15,6 +14,7 @@
 #include "indoormap/formats/pgm.hpp"
 #include "indoormap/formats/ros_map.hpp"
 #include "indoormap/version.hpp"
+#include "scanner_positions.hpp"
 
 namespace indoormap::app {
 

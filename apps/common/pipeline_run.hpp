@@ -21,9 +21,9 @@ namespace indoormap::app {
 struct PipelineRun {
   std::vector<cloud_io::InputReport> inputs;
   std::vector<Eigen::Vector3f> input_points;  ///< input frame; kept only when asked for
-  layout::MapResult map;  ///< the (first) storey mapped
-  std::vector<layout::Storey> storeys;  ///< every storey found, bottom up
-  std::vector<int> mapped;              ///< the storeys mapped: map, then more_maps
+  layout::MapResult map;                      ///< the (first) storey mapped
+  std::vector<layout::Storey> storeys;        ///< every storey found, bottom up
+  std::vector<int> mapped;                    ///< the storeys mapped: map, then more_maps
   std::vector<layout::MapResult> more_maps;
   std::size_t kept = 0;
   std::string scanner_source;  ///< "file", "config", "trajectory" or "estimated"

@@ -5,17 +5,17 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <optional>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "config_reader.hpp"
+#include "eval_pair.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/formats/ground_truth_json.hpp"
 #include "indoormap/sim/eval.hpp"
 #include "indoormap/version.hpp"
-#include "eval_pair.hpp"
 #include "main_guard.hpp"
 #include "output_set.hpp"
 
@@ -71,10 +71,12 @@ ordered_json storeys_json(const formats::TruthFile& truth, const fs::path& dir,
     int match = -1;
     double best = 1.0;
     for (int m = 0; m < n_result; ++m)
-      if (floors[m] && std::abs(*floors[m] - ts.floor_z_m) <= best) best = std::abs(*floors[m] - ts.floor_z_m), match = m;
+      if (floors[m] && std::abs(*floors[m] - ts.floor_z_m) <= best)
+        best = std::abs(*floors[m] - ts.floor_z_m), match = m;
     const bool by_index = match < 0 && ts.k < n_result && !floors[ts.k];
     if (by_index) match = ts.k;
-    ordered_json j = {{"k", ts.k}, {"truth_floor_z_m", ts.floor_z_m}, {"truth_ceiling_z_m", ts.ceiling_z_m}};
+    ordered_json j = {
+        {"k", ts.k}, {"truth_floor_z_m", ts.floor_z_m}, {"truth_ceiling_z_m", ts.ceiling_z_m}};
     if (match < 0) {
       j["result"] = nullptr;
       j["note"] = "no result storey with a floor within 1 m";
@@ -83,7 +85,8 @@ ordered_json storeys_json(const formats::TruthFile& truth, const fs::path& dir,
     }
     j["result"] = "storey_" + std::to_string(match);
     j["result_floor_z_m"] = opt(floors[match]);
-    j["floor_error_m"] = floors[match] ? ordered_json(*floors[match] - ts.floor_z_m) : ordered_json(nullptr);
+    j["floor_error_m"] =
+        floors[match] ? ordered_json(*floors[match] - ts.floor_z_m) : ordered_json(nullptr);
     if (by_index) j["note"] = "matched by index: the result's summary.json gives no floor heights";
     const formats::TruthFile st = formats::read_truth_json(ts.ground_truth);
     auto r = map_eval::evaluate_pair(st, dir / ("storey_" + std::to_string(match)), p);

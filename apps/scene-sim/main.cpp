@@ -16,8 +16,8 @@
 #include "indoormap/sim/building.hpp"
 #include "indoormap/sim/mobile.hpp"
 #include "indoormap/sim/random_scene.hpp"
-#include "indoormap/sim/world.hpp"
 #include "indoormap/sim/simulate.hpp"
+#include "indoormap/sim/world.hpp"
 #include "indoormap/version.hpp"
 #include "main_guard.hpp"
 #include "output_set.hpp"
@@ -239,19 +239,22 @@ int run(int argc, char** argv) {
   if (a.truth_cell > 0) config.output.truth_cell_m = a.truth_cell;
   sim::validate(config.mobile_params);
   sim::validate(config.seen);
-  if (config.storeys < 1 || config.storeys > 20) throw UsageError("building.storeys must be in [1, 20]");
+  if (config.storeys < 1 || config.storeys > 20)
+    throw UsageError("building.storeys must be in [1, 20]");
 
   if (a.random == !a.scene_file.empty())
     throw UsageError("give either a scene file or --random (see --help)");
   if (!a.random && a.rooms > 0) throw UsageError("--rooms applies to --random only");
   if (a.random) {
     sim::validate(config.random);
-    if (a.step_deg > 0) config.scanner.azimuth_step_deg = config.scanner.elevation_step_deg = a.step_deg;
+    if (a.step_deg > 0)
+      config.scanner.azimuth_step_deg = config.scanner.elevation_step_deg = a.step_deg;
   }
   if (a.print_config) {
     if (!a.random) {
       config.scanner = scene_sim::parse_scene_file(a.scene_file, config.scanner).scene.scanner;
-      if (a.step_deg > 0) config.scanner.azimuth_step_deg = config.scanner.elevation_step_deg = a.step_deg;
+      if (a.step_deg > 0)
+        config.scanner.azimuth_step_deg = config.scanner.elevation_step_deg = a.step_deg;
     }
     std::cout << scene_sim::config_to_yaml(config);
     return 0;
@@ -275,8 +278,9 @@ int run(int argc, char** argv) {
           stderr,
           "scene-sim: %s: %zu room(s), %zu furniture item(s), %zu scanner position(s), %llu rays\n",
           scene.name.c_str(), scene.rooms.size(), scene.furniture.size(), scene.scanners.size(),
-          static_cast<unsigned long long>(config.mobile ? sim::mobile_ray_count(scene, config.mobile_params)
-                                                        : sim::ray_count(scene)));
+          static_cast<unsigned long long>(config.mobile
+                                              ? sim::mobile_ray_count(scene, config.mobile_params)
+                                              : sim::ray_count(scene)));
   }
   const sim::BuildingSim bsim =
       sim::simulate_storeys(building, sim_options, config.mobile ? &config.mobile_params : nullptr);
@@ -287,8 +291,7 @@ int run(int argc, char** argv) {
                  "scene-sim: no point was returned (every ray missed or was out of range)\n");
     return static_cast<int>(ExitCode::kNoResult);
   }
-  const auto truths =
-      sim::storey_truths(building, bsim, config.output.truth_cell_m, config.seen);
+  const auto truths = sim::storey_truths(building, bsim, config.output.truth_cell_m, config.seen);
   sim::OutputOptions out_options = config.output;
   app::OutputSet set(a.out_dir, "scene-sim");  // all or nothing: docs/scene-sim.md, "Outputs"
   const auto written = scene_sim::write_building_outputs(

@@ -5,11 +5,11 @@
 #include <map>
 #include <string>
 
-#include "indoormap/sim/output.hpp"
 #include "indoormap/sim/mobile.hpp"
+#include "indoormap/sim/output.hpp"
 #include "indoormap/sim/random_scene.hpp"
-#include "indoormap/sim/seen.hpp"
 #include "indoormap/sim/scene.hpp"
+#include "indoormap/sim/seen.hpp"
 #include "indoormap/sim/simulate.hpp"
 
 namespace indoormap::scene_sim {

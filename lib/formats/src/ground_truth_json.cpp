@@ -112,7 +112,8 @@ void read_floor_keys(const json& j, const fs::path& path, TruthFile& t) {
   if (j.contains("scanners") && j["scanners"].is_array())
     for (std::size_t i = 0; i < j["scanners"].size(); ++i) {
       const std::string k = "scanners[" + std::to_string(i) + "]";
-      t.scanners_xy_m.push_back(point(member(j["scanners"][i], "position_m", path, k), path, k + ".position_m"));
+      t.scanners_xy_m.push_back(
+          point(member(j["scanners"][i], "position_m", path, k), path, k + ".position_m"));
     }
   if (!j.contains("storeys") || !j["storeys"].is_array()) return;
   for (std::size_t i = 0; i < j["storeys"].size(); ++i) {

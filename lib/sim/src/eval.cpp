@@ -199,8 +199,9 @@ ObjectScores evaluate_objects(const std::vector<EvalObject>& truth, std::vector<
   };
   s.truth_below_min_area = static_cast<int>(small.size());
   s.truth_count -= s.truth_below_min_area;
-  s.matched = static_cast<int>(std::count_if(s.matches.begin(), s.matches.end(),
-                                             [&](const ObjectMatch& m) { return !is_small(m.truth_id); }));
+  s.matched =
+      static_cast<int>(std::count_if(s.matches.begin(), s.matches.end(),
+                                     [&](const ObjectMatch& m) { return !is_small(m.truth_id); }));
   std::erase_if(s.missed, is_small);
   s.recall = s.truth_count > 0 ? static_cast<double>(s.matched) / s.truth_count : 0.0;
   s.precision = s.result_count > 0 ? static_cast<double>(s.matched_all) / s.result_count : 0.0;

@@ -19,13 +19,17 @@ std::uint64_t splitmix64(std::uint64_t& x) {
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
   return z ^ (z >> 31);
 }
-std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
+std::uint64_t rotl(std::uint64_t x, int k) {
+  return (x << k) | (x >> (64 - k));
+}
 
 int azimuth_count(const ScannerParams& s) {
   return std::max(1, static_cast<int>(std::floor(360.0 / s.azimuth_step_deg + 1e-9)));
 }
 int elevation_count(const ScannerParams& s) {
-  return static_cast<int>(std::floor((s.elevation_max_deg - s.elevation_min_deg) / s.elevation_step_deg + 1e-9)) + 1;
+  return static_cast<int>(std::floor(
+             (s.elevation_max_deg - s.elevation_min_deg) / s.elevation_step_deg + 1e-9)) +
+         1;
 }
 }  // namespace
 
@@ -45,7 +49,9 @@ std::uint64_t Rng::next() {
   return result;
 }
 
-double Rng::uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+double Rng::uniform() {
+  return static_cast<double>(next() >> 11) * 0x1.0p-53;
+}
 
 int Rng::uniform_int(int lo, int hi) {
   const std::uint64_t span = static_cast<std::uint64_t>(static_cast<std::int64_t>(hi) - lo) + 1;
@@ -81,13 +87,15 @@ SimResult simulate_pattern(const Scene& scene, const SimOptions& options, std::u
   const ScannerParams& sp = scene.scanner;
   if (rays > options.max_rays)
     throw BudgetError("scene: " + std::to_string(rays) + " rays exceed the budget of " +
-                      std::to_string(options.max_rays) + " (coarser scanner.azimuth_step_deg / elevation_step_deg?)");
+                      std::to_string(options.max_rays) +
+                      " (coarser scanner.azimuth_step_deg / elevation_step_deg?)");
 
   const SceneGeometry geometry = build_geometry(scene);
   RayCaster caster(geometry);
   const Eigen::Matrix3d R = tilt_rotation(scene.tilt);  // scene -> tilted
   const Eigen::Matrix3d Rt = R.transpose();
-  const double sector = options.sector_deg > 0 && options.sector_deg < 360 ? options.sector_deg : 360.0;
+  const double sector =
+      options.sector_deg > 0 && options.sector_deg < 360 ? options.sector_deg : 360.0;
   const int n_sectors = static_cast<int>(std::ceil(360.0 / sector - 1e-9));
 
   SimResult out;
@@ -146,8 +154,10 @@ SimResult simulate_pattern(const Scene& scene, const SimOptions& options, std::u
           // A depth edge towards the neighbour measured just before (same column or previous
           // column): the footprint straddles both surfaces and the echo lands in between.
           double other = kNone;
-          if (!std::isnan(below) && std::abs(below - t) > sp.mixed_pixel_min_jump_m) other = below;
-          else if (!std::isnan(left) && std::abs(left - t) > sp.mixed_pixel_min_jump_m) other = left;
+          if (!std::isnan(below) && std::abs(below - t) > sp.mixed_pixel_min_jump_m)
+            other = below;
+          else if (!std::isnan(left) && std::abs(left - t) > sp.mixed_pixel_min_jump_m)
+            other = left;
           if (!std::isnan(other) && rng.uniform() < sp.mixed_pixel_probability) {
             range = t + rng.uniform() * (other - t);
             mixed = true;
@@ -176,8 +186,10 @@ SimResult simulate(const Scene& input, const SimOptions& options) {
   pat.azimuths = azimuth_count(sp);
   pat.azimuth_step_deg = sp.azimuth_step_deg;
   const int n_el = elevation_count(sp);
-  for (int j = 0; j < n_el; ++j) pat.elevation_deg.push_back(sp.elevation_min_deg + j * sp.elevation_step_deg);
-  return detail::simulate_pattern(scene, options, ray_count(scene), [&](std::size_t) { return pat; });
+  for (int j = 0; j < n_el; ++j)
+    pat.elevation_deg.push_back(sp.elevation_min_deg + j * sp.elevation_step_deg);
+  return detail::simulate_pattern(scene, options, ray_count(scene),
+                                  [&](std::size_t) { return pat; });
 }
 
 }  // namespace indoormap::sim

@@ -54,6 +54,6 @@ struct RaySource {
 /// counts add up over all sources and one stride (max_rays over all points) subsamples them.
 /// Sources with a non-finite scanner are skipped; none usable: nothing done (applied false).
 GhostResult remove_ghost_voxels_by_origin(VoxelGrid& grid, const std::vector<RaySource>& sources,
-                                const GhostParams& params = {});
+                                          const GhostParams& params = {});
 
 }  // namespace indoormap::cloud

@@ -40,7 +40,7 @@ struct TruthFile {
   std::filesystem::path layout_image;  ///< resolved against the JSON's directory
   GridGeometry layout_geometry;
   /// Optional in the file (older ground truths have none of these):
-  std::vector<sim::TruthDoor> doors;            ///< rooms[].doors[] (id "<room>.door<j>")
+  std::vector<sim::TruthDoor> doors;           ///< rooms[].doors[] (id "<room>.door<j>")
   std::vector<Eigen::Vector2d> scanners_xy_m;  ///< scanners[].position_m, scene frame
   struct Storey {
     int k = 0;

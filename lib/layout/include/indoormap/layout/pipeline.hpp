@@ -31,23 +31,24 @@ struct StageTime {
 
 struct MapResult {
   cloud::LevelResult level;
-  PointCloud cloud_map;                   ///< the input cloud rotated into the levelled map frame
-  cloud::Bounds3 bounds;                  ///< robust bounds, map frame
-  cloud::VoxelGrid voxels;                ///< ghost voxels cleared (ghosts)
+  PointCloud cloud_map;     ///< the input cloud rotated into the levelled map frame
+  cloud::Bounds3 bounds;    ///< robust bounds, map frame
+  cloud::VoxelGrid voxels;  ///< ghost voxels cleared (ghosts)
   cloud::GhostResult ghosts;
   cloud::LayerAnalysis layers;
-  GridGeometry geometry;                  ///< the 2D grid of M_w, M_f and M_r (map frame)
-  Grid<std::uint8_t> walls;               ///< M_w: occupancy of the wall band
-  Grid<std::uint8_t> furniture;           ///< M_f: occupancy of the furniture band
-  LayoutResult layout;                    ///< M_r and the passage area
-  NavResult nav;                          ///< the robot's map (map.pgm): body band, evidence
+  GridGeometry geometry;         ///< the 2D grid of M_w, M_f and M_r (map frame)
+  Grid<std::uint8_t> walls;      ///< M_w: occupancy of the wall band
+  Grid<std::uint8_t> furniture;  ///< M_f: occupancy of the furniture band
+  LayoutResult layout;           ///< M_r and the passage area
+  NavResult nav;                 ///< the robot's map (map.pgm): body band, evidence
   std::vector<StageTime> timings;
-  std::vector<std::string> warnings;      ///< from every stage, in order
+  std::vector<std::string> warnings;  ///< from every stage, in order
 };
 
 /// Runs the pipeline on a cloud in the input frame (metres, z up). Scanner positions in
-/// cloud.scanners are used as flood-fill seeds of M_r and as ray origins of the navigation map. Throws InputError / BudgetError on unusable data,
-/// UsageError (naming the key) for invalid level / voxel / ghosts / layers parameters.
+/// cloud.scanners are used as flood-fill seeds of M_r and as ray origins of the navigation map.
+/// Throws InputError / BudgetError on unusable data, UsageError (naming the key) for invalid level
+/// / voxel / ghosts / layers parameters.
 MapResult make_map(PointCloud cloud, const MapParams& params);
 
 // The stages of make_map, for make_storey_maps (storeys.hpp), which levels and voxelises the

@@ -60,18 +60,18 @@ struct ObjectScores {
   int truth_count = 0, result_count = 0, matched = 0;
   double recall = 0.0, precision = 0.0;
   std::vector<ObjectMatch> matches;
-  std::vector<std::string> missed;  ///< truth ids without a match
+  std::vector<std::string> missed;    ///< truth ids without a match
   std::vector<std::string> spurious;  ///< result ids without a match
-  int truth_below_min_area = 0;  ///< truth items left out of truth_count (EvalParams)
-  int matched_all = 0;           ///< matches including those of items below the minimum area
+  int truth_below_min_area = 0;       ///< truth items left out of truth_count (EvalParams)
+  int matched_all = 0;                ///< matches including those of items below the minimum area
   std::optional<double> mean_abs_z_max_error_m, mean_abs_z_min_error_m, max_abs_height_error_m;
 };
 
 /// One-to-one greedy matching by footprint IoU (highest first) with IoU >= min_iou; footprint
 /// IoU is computed by rasterising both polygons at 1 cm. Recall = matched / truth, precision =
 /// matched / result (0 when the denominator is 0).
-ObjectScores evaluate_objects(const std::vector<EvalObject>& truth, const std::vector<EvalObject>& result,
-                              double min_iou = 0.5);
+ObjectScores evaluate_objects(const std::vector<EvalObject>& truth,
+                              const std::vector<EvalObject>& result, double min_iou = 0.5);
 
 /// map-eval's parameters (config/map-eval.yaml).
 struct EvalParams {
@@ -89,7 +89,8 @@ void validate(const EvalParams& params);
 /// The object scores map-eval reports: without include_hanging both sides are what stands on the
 /// floor (truth items with on_floor, result objects not of kind hanging / lamp); matched with
 /// params.min_object_iou; recall over the truth items of at least min_truth_area_m2 (matched
-/// = their matches), precision = matched_all / result_count. Throws UsageError for invalid params (validate).
+/// = their matches), precision = matched_all / result_count. Throws UsageError for invalid params
+/// (validate).
 ObjectScores evaluate_objects(const std::vector<EvalObject>& truth, std::vector<EvalObject> result,
                               const EvalParams& params);
 
@@ -114,6 +115,7 @@ struct RoomMatch {
 
 /// Each result polygon is matched with the truth room it overlaps most (IoU, 2 cm raster); the
 /// Hausdorff distance is between the boundaries sampled every 1 cm.
-std::vector<RoomMatch> evaluate_rooms(const std::vector<TruthRoom>& truth, const std::vector<Polygon>& result);
+std::vector<RoomMatch> evaluate_rooms(const std::vector<TruthRoom>& truth,
+                                      const std::vector<Polygon>& result);
 
 }  // namespace indoormap::sim

@@ -10,9 +10,9 @@
 namespace indoormap::sim {
 
 struct RandomSceneParams {
-  int rooms = 1;                    ///< furnished rooms (1..200); a corridor is always added
-  double max_yaw_deg = 40.0;        ///< the building is rotated by a yaw in [-max, max]
-  double max_tilt_deg = 1.5;        ///< tilt magnitude drawn from [0.3, max]
+  int rooms = 1;              ///< furnished rooms (1..200); a corridor is always added
+  double max_yaw_deg = 40.0;  ///< the building is rotated by a yaw in [-max, max]
+  double max_tilt_deg = 1.5;  ///< tilt magnitude drawn from [0.3, max]
   double l_shape_probability = 0.3;
   double sloped_ceiling_probability = 0.2;
   bool scanner_in_corridor = true;  ///< also scan from the corridor when rooms >= 2
