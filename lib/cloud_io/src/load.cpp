@@ -39,12 +39,8 @@ std::uint64_t checked_file_size(const std::string& file) {
 }
 
 namespace {
-struct FileCloser {
-  void operator()(std::FILE* f) const { std::fclose(f); }
-};
-
 std::string read_up_to(const std::string& file, std::uint64_t bytes) {
-  std::unique_ptr<std::FILE, FileCloser> f(std::fopen(file.c_str(), "rb"));
+  FilePtr f(std::fopen(file.c_str(), "rb"));
   if (!f) throw InputError(file, std::string("cannot open: ") + std::strerror(errno));
   std::string buf(static_cast<std::size_t>(bytes), '\0');
   const std::size_t got = std::fread(buf.data(), 1, buf.size(), f.get());

@@ -6,7 +6,9 @@
 // Readers check every size against the file size and the budget before allocating.
 #include <Eigen/Core>
 #include <cstdint>
+#include <cstdio>
 #include <functional>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,6 +16,12 @@
 #include "indoormap/cloud_io/load.hpp"
 
 namespace indoormap::cloud_io::detail {
+
+struct FileCloser {
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
+/// A C stream closed when it goes out of scope (null when fopen failed).
+using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
 
 /// The point budget of the current file: how many points load_clouds may still accept.
 struct Budget {

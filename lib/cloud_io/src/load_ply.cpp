@@ -299,10 +299,6 @@ class TokenReader {
   bool eof_ = false;
 };
 
-struct FileCloser {
-  void operator()(std::FILE* f) const { std::fclose(f); }
-};
-
 // The ascii body up to and including the vertex element, one element per line: a line with a
 // value too many or too few is refused at that line (it would shift every later value).
 void read_ascii_elements(TokenReader& tr, const Header& h, std::vector<Element>::const_iterator vit,
@@ -402,7 +398,7 @@ ReadInfo read_ply(const std::string& file, const Budget& budget,
   }
   check_budget(file, n, budget);
 
-  std::unique_ptr<std::FILE, FileCloser> f(std::fopen(file.c_str(), "rb"));
+  FilePtr f(std::fopen(file.c_str(), "rb"));
   if (!f) throw InputError(file, std::string("cannot open: ") + std::strerror(errno));
   if (std::fseek(f.get(), static_cast<long>(h.data_offset), SEEK_SET) != 0)
     throw InputError(file, "cannot seek to the PLY data section");

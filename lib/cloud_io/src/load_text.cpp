@@ -18,10 +18,6 @@ namespace {
 constexpr std::size_t kChunkBytes = std::size_t{4} << 20;  // progress granularity, too
 constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
 
-struct FileCloser {
-  void operator()(std::FILE* f) const { std::fclose(f); }
-};
-
 bool is_space(char c) {
   return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
 }
@@ -75,7 +71,7 @@ void for_each_line(const std::string& file, std::uint64_t offset, std::size_t fi
                    const LoadOptions& options, const LineFn& on_line,
                    const std::function<void(std::uint64_t)>& after_chunk) {
   const std::uint64_t size = checked_file_size(file);
-  std::unique_ptr<std::FILE, FileCloser> f(std::fopen(file.c_str(), "rb"));
+  FilePtr f(std::fopen(file.c_str(), "rb"));
   if (!f) throw InputError(file, std::string("cannot open: ") + std::strerror(errno));
   if (offset > 0 && std::fseek(f.get(), static_cast<long>(offset), SEEK_SET) != 0)
     throw InputError(file, "cannot seek to byte " + std::to_string(offset));

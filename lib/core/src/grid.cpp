@@ -10,7 +10,7 @@ GridGeometry::GridGeometry(Eigen::Vector2d origin_m, double cell_m, int width, i
 namespace {
 // Saturates far-away and non-finite coordinates to an index that is outside every grid, so the
 // conversion never overflows an int.
-int to_index(double v) {
+int to_cell_index(double v) {
   constexpr double kLimit = 1 << 30;
   if (!(v > -kLimit)) return -(1 << 30);
   if (!(v < kLimit)) return 1 << 30;
@@ -19,8 +19,8 @@ int to_index(double v) {
 }  // namespace
 
 CellIndex GridGeometry::cell_of(const Eigen::Vector2d& p_map) const {
-  return {to_index((p_map.x() - origin_m_.x()) / cell_m_),
-          to_index((p_map.y() - origin_m_.y()) / cell_m_)};
+  return {to_cell_index((p_map.x() - origin_m_.x()) / cell_m_),
+          to_cell_index((p_map.y() - origin_m_.y()) / cell_m_)};
 }
 
 Eigen::Vector2d GridGeometry::center_of(CellIndex c) const {

@@ -4,13 +4,13 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "font.hpp"
 #include "indoormap/draw/canvas.hpp"
 #include "indoormap/draw/palette.hpp"
 
 namespace indoormap::draw {
 namespace {
 
-constexpr auto kFont = cv::FONT_HERSHEY_SIMPLEX;
 const cv::Scalar kCorridor(230, 170, 90);  // BGR: blue
 const cv::Scalar kCrossing(40, 140, 255);  // orange
 const cv::Scalar kNarrow(200, 200, 200);   // light grey

@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 #include <string>
 
+#include "font.hpp"
 #include "indoormap/draw/canvas.hpp"
 #include "indoormap/draw/palette.hpp"
 
@@ -62,7 +63,7 @@ void write_border_png(const std::filesystem::path& path, const layout::MapResult
                   r.area_m2, r.perimeter_m, r.openings.size());
   else
     std::snprintf(title, sizeof title, "no closed room border");
-  cv::putText(img, title, {6, 20}, cv::FONT_HERSHEY_SIMPLEX, 0.55, {0, 0, 0}, 1, cv::LINE_AA);
+  cv::putText(img, title, {6, 20}, kFont, 0.55, {0, 0, 0}, 1, cv::LINE_AA);
   LegendStyle style;
   style.gap_px = 28;
   style.wrap_reserve_px = 40;

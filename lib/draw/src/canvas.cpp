@@ -5,6 +5,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "font.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 
@@ -36,8 +37,8 @@ void Legend::item(const std::string& label, const std::function<void(cv::Rect)>&
     y0_ += style_.row_px;
   }
   symbol(cv::Rect(x_, y0_, 16, 16));
-  cv::putText(img_, label, {x_ + 20, y0_ + 13}, cv::FONT_HERSHEY_SIMPLEX, style_.font_scale,
-              {0, 0, 0}, 1, cv::LINE_AA);
+  cv::putText(img_, label, {x_ + 20, y0_ + 13}, kFont, style_.font_scale, {0, 0, 0}, 1,
+              cv::LINE_AA);
   x_ += style_.gap_px + len * style_.char_px;
 }
 
@@ -75,8 +76,8 @@ void Legend::scale_bar(int bar) {
     cv::line(img_, {x, y0 + 6}, {x, y0 + 16}, {0, 0, 0}, 1);
     cv::line(img_, {x + bar, y0 + 6}, {x + bar, y0 + 16}, {0, 0, 0}, 1);
   }
-  cv::putText(img_, "1 m", {x + bar + 6, y0 + 16}, cv::FONT_HERSHEY_SIMPLEX, style_.font_scale,
-              {0, 0, 0}, 1, cv::LINE_AA);
+  cv::putText(img_, "1 m", {x + bar + 6, y0 + 16}, kFont, style_.font_scale, {0, 0, 0}, 1,
+              cv::LINE_AA);
 }
 
 void write_png(const std::filesystem::path& path, const cv::Mat& img,

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "font.hpp"
 #include "indoormap/draw/canvas.hpp"
 #include "indoormap/draw/palette.hpp"
 
@@ -11,7 +12,6 @@ namespace indoormap::draw {
 
 namespace {
 
-constexpr auto kFont = cv::FONT_HERSHEY_SIMPLEX;
 const cv::Scalar kMarker(0, 0, 220);
 
 void draw_overlay(cv::Mat& img, const PixelFrame& frame, const Overlay& ov) {

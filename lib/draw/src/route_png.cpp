@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 #include <string>
 
+#include "font.hpp"
 #include "indoormap/draw/canvas.hpp"
 #include "indoormap/draw/palette.hpp"
 
@@ -16,7 +17,6 @@ using planning::SafeCell;
 
 namespace {
 
-constexpr auto kFont = cv::FONT_HERSHEY_SIMPLEX;
 // Outside the map and obstacles take the palette's unknown and wall colours.
 const cv::Scalar c_out = cell_colour(Cell::kUnknown), c_obst = cell_colour(Cell::kWall),
                  c_unsafe(150, 150, 235), c_safe(255, 255, 255), c_region(170, 235, 170),

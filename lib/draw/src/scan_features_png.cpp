@@ -5,6 +5,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "font.hpp"
 #include "indoormap/draw/canvas.hpp"
 
 namespace indoormap::draw {
@@ -13,7 +14,6 @@ namespace {
 
 namespace sf = scan_features;
 using V = Eigen::Vector2d;
-constexpr auto kFont = cv::FONT_HERSHEY_SIMPLEX;
 // BGR
 const cv::Scalar kPoint(110, 110, 110), kWall(160, 60, 0), kDoor(40, 170, 0), kInner(0, 0, 220),
     kOuter(0, 140, 255), kPotential(200, 0, 200), kCorridor(190, 245, 250), kSensor(0, 0, 0);

@@ -6,27 +6,24 @@
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/formats/json.hpp"
+#include "json_write.hpp"
 
 namespace indoormap::formats {
 namespace {
 
 using nlohmann::ordered_json;
 
-ordered_json point(const Eigen::Vector2d& p) {
-  return ordered_json::array({p.x(), p.y()});
-}
-
 ordered_json ring(const Polygon& poly) {
   ordered_json j = ordered_json::array();
-  for (const auto& p : poly) j.push_back(point(p));
-  if (!poly.empty()) j.push_back(point(poly.front()));
+  for (const auto& p : poly) j.push_back(detail::xy_json<ordered_json>(p));
+  if (!poly.empty()) j.push_back(detail::xy_json<ordered_json>(poly.front()));
   return j;
 }
 
 ordered_json door_json(const areas::Door& d) {
   return {{"between", {d.a, d.b}},
-          {"from", point(d.end0_m)},
-          {"to", point(d.end1_m)},
+          {"from", detail::xy_json<ordered_json>(d.end0_m)},
+          {"to", detail::xy_json<ordered_json>(d.end1_m)},
           {"width_m", d.width_m},
           {"shared_cells", d.shared_cells}};
 }
@@ -51,7 +48,9 @@ ordered_json areas_geojson(const areas::AreasResult& r) {
     features.push_back(
         {{"type", "Feature"},
          {"geometry",
-          {{"type", "LineString"}, {"coordinates", {point(d.end0_m), point(d.end1_m)}}}},
+          {{"type", "LineString"},
+           {"coordinates",
+            {detail::xy_json<ordered_json>(d.end0_m), detail::xy_json<ordered_json>(d.end1_m)}}}},
          {"properties", {{"type", "door"}, {"between", {d.a, d.b}}, {"width_m", d.width_m}}}});
   return {{"type", "FeatureCollection"}, {"features", features}};
 }
@@ -75,7 +74,9 @@ ordered_json areas_json(const areas::AreasResult& r) {
   for (const areas::Door& d : r.doors)
     edges.push_back({{"a", d.a}, {"b", d.b}, {"door", door_json(d)}});
   for (const auto& c : r.crossing_checks)
-    checks.push_back({{"at_m", point(c.at_m)}, {"arms", c.arms}, {"confirmed", c.confirmed}});
+    checks.push_back({{"at_m", detail::xy_json<ordered_json>(c.at_m)},
+                      {"arms", c.arms},
+                      {"confirmed", c.confirmed}});
   return {{"areas", list},
           {"graph", {{"nodes", nodes}, {"edges", edges}, {"components", r.graph_components}}},
           {"crossing_checks", checks},

@@ -7,6 +7,7 @@
 #include "indoormap/core/polygon.hpp"
 #include "indoormap/version.hpp"
 #include "json_read.hpp"
+#include "json_write.hpp"
 
 namespace indoormap::formats {
 
@@ -18,15 +19,12 @@ using namespace detail;
 
 namespace {
 
-ordered_json xy(const Eigen::Vector2d& p) {
-  return ordered_json::array({p.x(), p.y()});
-}
 ordered_json xyz(const Eigen::Vector3d& p) {
   return ordered_json::array({p.x(), p.y(), p.z()});
 }
 ordered_json poly_json(const Polygon& poly) {
   ordered_json a = ordered_json::array();
-  for (const auto& p : poly) a.push_back(xy(p));
+  for (const auto& p : poly) a.push_back(xy_json<ordered_json>(p));
   return a;
 }
 
@@ -44,9 +42,9 @@ ordered_json opening_json(const Room& room, const Opening& o, bool door) {
     j["sill_m"] = o.bottom_m;
     j["top_m"] = o.top_m;
   }
-  j["center"] = xy(a + u * o.at_m);
-  j["segment"] = ordered_json::array(
-      {xy(a + u * (o.at_m - o.width_m / 2)), xy(a + u * (o.at_m + o.width_m / 2))});
+  j["center"] = xy_json<ordered_json>(a + u * o.at_m);
+  j["segment"] = ordered_json::array({xy_json<ordered_json>(a + u * (o.at_m - o.width_m / 2)),
+                                      xy_json<ordered_json>(a + u * (o.at_m + o.width_m / 2))});
   return j;
 }
 
@@ -219,13 +217,13 @@ ordered_json ground_truth_json(const Scene& scene, const SimResult& sim, const T
     jf["z_max_m"] = t.z_max_m;
     jf["on_floor"] = t.on_floor;
     jf["room"] = t.room;
-    jf["center"] = xy(f.center_m);
+    jf["center"] = xy_json<ordered_json>(f.center_m);
     jf["yaw_deg"] = f.yaw_deg;
     if (f.radius_m > 0 && (f.type == FurnitureType::kBin || f.type == FurnitureType::kPillar ||
                            f.type == FurnitureType::kTable || f.type == FurnitureType::kLamp)) {
       jf["radius_m"] = f.radius_m;
     } else {
-      jf["size"] = xy(f.size_m);
+      jf["size"] = xy_json<ordered_json>(f.size_m);
     }
     furn.push_back(jf);
   }

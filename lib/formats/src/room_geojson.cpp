@@ -5,6 +5,7 @@
 #include "indoormap/border/border.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "json_read.hpp"
+#include "json_write.hpp"
 
 namespace indoormap::formats {
 
@@ -14,20 +15,17 @@ using namespace detail;
 
 namespace {
 
-json xy(const Eigen::Vector2d& p) {
-  return {p.x(), p.y()};
-}
-
 json ring_json(const indoormap::Polygon& poly) {
   json ring = json::array();
-  for (const auto& v : poly) ring.push_back(xy(v));
-  if (!poly.empty()) ring.push_back(xy(poly.front()));  // GeoJSON rings repeat the first vertex
+  for (const auto& v : poly) ring.push_back(xy_json(v));
+  if (!poly.empty())
+    ring.push_back(xy_json(poly.front()));  // GeoJSON rings repeat the first vertex
   return ring;
 }
 
 json object_json(const border::InteriorObject& o) {
-  return {{"min_m", xy(o.min_m)},
-          {"max_m", xy(o.max_m)},
+  return {{"min_m", xy_json(o.min_m)},
+          {"max_m", xy_json(o.max_m)},
           {"min_cell", {o.min.col, o.min.row}},
           {"max_cell", {o.max.col, o.max.row}},
           {"cells", o.cells},
@@ -60,12 +58,9 @@ std::vector<Polygon> read_room_geojson_unguarded(const fs::path& path) {
 }  // namespace
 
 json border_opening_json(const border::Opening& o) {
-  return {{"a_m", xy(o.a_m)},
-          {"b_m", xy(o.b_m)},
-          {"width_m", o.width_m},
-          {"door_candidate", o.is_door_candidate},
-          {"chain_first", o.chain_first},
-          {"chain_last", o.chain_last}};
+  return {{"a_m", xy_json(o.a_m)},        {"b_m", xy_json(o.b_m)},
+          {"width_m", o.width_m},         {"door_candidate", o.is_door_candidate},
+          {"chain_first", o.chain_first}, {"chain_last", o.chain_last}};
 }
 
 json room_geojson(const border::BorderResult& r) {
@@ -81,7 +76,7 @@ json room_geojson(const border::BorderResult& r) {
   for (const auto& o : r.openings)
     features.push_back(
         {{"type", "Feature"},
-         {"geometry", {{"type", "LineString"}, {"coordinates", {xy(o.a_m), xy(o.b_m)}}}},
+         {"geometry", {{"type", "LineString"}, {"coordinates", {xy_json(o.a_m), xy_json(o.b_m)}}}},
          {"properties",
           {{"kind", "opening"}, {"width_m", o.width_m}, {"door_candidate", o.is_door_candidate}}}});
   for (const auto& o : r.interior_objects) {
@@ -112,8 +107,8 @@ json room_json(const border::BorderResult& r, const GridGeometry& geometry) {
   json chain_cells = json::array(), chain_m = json::array(), polygon = json::array(),
        components = json::array();
   for (const auto& c : r.chain) chain_cells.push_back({c.col, c.row});
-  for (const auto& p : r.chain_m) chain_m.push_back(xy(p));
-  for (const auto& p : r.polygon_m) polygon.push_back(xy(p));
+  for (const auto& p : r.chain_m) chain_m.push_back(xy_json(p));
+  for (const auto& p : r.polygon_m) polygon.push_back(xy_json(p));
   for (const auto& c : r.components)
     components.push_back({{"label", c.label},
                           {"start_cell", {c.start.col, c.start.row}},
@@ -127,8 +122,8 @@ json room_json(const border::BorderResult& r, const GridGeometry& geometry) {
           {"reason", r.reason},
           {"frame", "map"},
           {"cell_m", geometry.cell_m()},
-          {"origin_m", xy(geometry.origin_m())},
-          {"scanner_m", xy(r.scanner_m)},
+          {"origin_m", xy_json(geometry.origin_m())},
+          {"scanner_m", xy_json(r.scanner_m)},
           {"chain_cells", chain_cells},
           {"chain_m", chain_m},
           {"polygon_m", polygon},

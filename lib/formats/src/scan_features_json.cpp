@@ -6,6 +6,7 @@
 
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/formats/json.hpp"
+#include "json_write.hpp"
 
 namespace indoormap::formats {
 
@@ -14,9 +15,6 @@ namespace sf = scan_features;
 
 namespace {
 
-json xy(const Eigen::Vector2d& p) {
-  return {p.x(), p.y()};
-}
 json pose(const laser::Pose2d& p) {
   return {{"x_m", p.x_m}, {"y_m", p.y_m}, {"theta_rad", p.theta_rad}};
 }
@@ -24,10 +22,10 @@ json pose(const laser::Pose2d& p) {
 json walls_json(const std::vector<sf::Wall>& walls) {
   json out = json::array();
   for (const sf::Wall& w : walls)
-    out.push_back({{"start_robot", xy(w.start_robot)},
-                   {"end_robot", xy(w.end_robot)},
-                   {"start_map", xy(w.start_map)},
-                   {"end_map", xy(w.end_map)},
+    out.push_back({{"start_robot", detail::xy_json(w.start_robot)},
+                   {"end_robot", detail::xy_json(w.end_robot)},
+                   {"start_map", detail::xy_json(w.start_map)},
+                   {"end_map", detail::xy_json(w.end_map)},
                    {"length_m", w.length_m()},
                    {"points", w.points},
                    {"rms_m", w.rms_m},
@@ -39,10 +37,10 @@ json walls_json(const std::vector<sf::Wall>& walls) {
 json doors_json(const std::vector<sf::Door>& doors) {
   json out = json::array();
   for (const sf::Door& d : doors)
-    out.push_back({{"a_robot", xy(d.a_robot)},
-                   {"b_robot", xy(d.b_robot)},
-                   {"a_map", xy(d.a_map)},
-                   {"b_map", xy(d.b_map)},
+    out.push_back({{"a_robot", detail::xy_json(d.a_robot)},
+                   {"b_robot", detail::xy_json(d.b_robot)},
+                   {"a_map", detail::xy_json(d.a_map)},
+                   {"b_map", detail::xy_json(d.b_map)},
                    {"width_m", d.width_m()},
                    {"kind", sf::door_kind_name(d.kind)},
                    {"walls", {d.wall_before, d.wall_after}}});
@@ -52,8 +50,8 @@ json doors_json(const std::vector<sf::Door>& doors) {
 json corners_json(const std::vector<sf::Corner>& corners) {
   json out = json::array();
   for (const sf::Corner& c : corners)
-    out.push_back({{"p_robot", xy(c.p_robot)},
-                   {"p_map", xy(c.p_map)},
+    out.push_back({{"p_robot", detail::xy_json(c.p_robot)},
+                   {"p_map", detail::xy_json(c.p_map)},
                    {"type", sf::corner_type_name(c.type)},
                    {"angle_deg", c.angle_rad * 180.0 / std::numbers::pi},
                    {"walls", {c.wall_in, c.wall_out}},

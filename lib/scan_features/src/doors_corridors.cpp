@@ -11,9 +11,6 @@ namespace {
 Eigen::Vector2d direction(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return (b - a).normalized();
 }
-Eigen::Vector2d direction(const Wall& w) {
-  return direction(w.start_laser, w.end_laser);
-}
 
 /// Signed distance of p to the line through a along unit d (positive on the left).
 double side(const Eigen::Vector2d& a, const Eigen::Vector2d& d, const Eigen::Vector2d& p) {
@@ -54,7 +51,7 @@ bool door_between(const Wall& u, const Wall& v, const DoorParams& p, DoorKind& k
   const Eigen::Vector2d a = u.end_laser, b = v.start_laser;
   const double width = (b - a).norm();
   if (width < p.min_width_m || width > p.max_width_m) return false;
-  const Eigen::Vector2d du = direction(u), dv = direction(v), dg = direction(a, b);
+  const Eigen::Vector2d du = u.direction_laser(), dv = v.direction_laser(), dg = direction(a, b);
   if (angle_between(du, dv) <= p.max_angle_rad && std::abs(side(a, du, b)) <= p.max_offset_m &&
       std::abs(side(b, dv, a)) <= p.max_offset_m) {
     kind = DoorKind::kCollinear;
@@ -105,12 +102,12 @@ namespace {
 /// The walls (indices) running along wall k: same direction within the angle, on its line.
 std::vector<int> side_walls(const std::vector<Wall>& walls, int k, const CorridorParams& p) {
   std::vector<int> out;
-  const Eigen::Vector2d dk = direction(walls[static_cast<std::size_t>(k)]);
+  const Eigen::Vector2d dk = walls[static_cast<std::size_t>(k)].direction_laser();
   const Eigen::Vector2d ak = walls[static_cast<std::size_t>(k)].start_laser;
   for (int j = 0; j < static_cast<int>(walls.size()); ++j) {
     const Wall& w = walls[static_cast<std::size_t>(j)];
     const Eigen::Vector2d mid = 0.5 * (w.start_laser + w.end_laser);
-    if (j == k || (angle_between(dk, direction(w)) <= p.max_angle_rad &&
+    if (j == k || (angle_between(dk, w.direction_laser()) <= p.max_angle_rad &&
                    std::abs(side(ak, dk, mid)) <= p.side_offset_m))
       out.push_back(j);
   }
@@ -126,11 +123,11 @@ std::vector<Corridor> find_corridors(const std::vector<Wall>& walls, const Corri
   for (int i = 0; i < n; ++i) {
     const Wall& u = walls[static_cast<std::size_t>(i)];
     if (u.length_m() < p.min_wall_length_m || used[static_cast<std::size_t>(i)] >= 0) continue;
-    const Eigen::Vector2d du = direction(u);
+    const Eigen::Vector2d du = u.direction_laser();
     for (int k = i + 1; k < n; ++k) {
       const Wall& v = walls[static_cast<std::size_t>(k)];
       if (v.length_m() < p.min_wall_length_m || used[static_cast<std::size_t>(k)] >= 0) continue;
-      const Eigen::Vector2d dv = direction(v);
+      const Eigen::Vector2d dv = v.direction_laser();
       if (angle_between(du, -dv) > p.max_angle_rad) continue;  // facing: opposite directions
       const Eigen::Vector2d mu = 0.5 * (u.start_laser + u.end_laser);
       const Eigen::Vector2d mv = 0.5 * (v.start_laser + v.end_laser);

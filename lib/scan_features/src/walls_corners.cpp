@@ -8,13 +8,9 @@ namespace indoormap::scan_features {
 
 namespace {
 
-Eigen::Vector2d direction(const Wall& w) {
-  return (w.end_laser - w.start_laser).normalized();
-}
-
 /// Where the lines of walls u and v cross; false when (nearly) parallel.
 bool intersect(const Wall& u, const Wall& v, Eigen::Vector2d& x) {
-  const Eigen::Vector2d du = direction(u), dv = direction(v);
+  const Eigen::Vector2d du = u.direction_laser(), dv = v.direction_laser();
   const double den = du.x() * dv.y() - du.y() * dv.x();
   if (std::abs(den) < 1e-9) return false;
   const Eigen::Vector2d w0 = v.start_laser - u.start_laser;
@@ -59,7 +55,8 @@ std::vector<Corner> find_corners(std::vector<Wall>& walls, bool full_circle,
   for (std::size_t i = 0; i < pairs && n > 1; ++i) {
     Wall& u = walls[i];
     Wall& v = walls[(i + 1) % n];
-    const double angle = std::acos(std::clamp(direction(u).dot(direction(v)), -1.0, 1.0));
+    const double angle =
+        std::acos(std::clamp(u.direction_laser().dot(v.direction_laser()), -1.0, 1.0));
     if (angle < params.min_angle_rad) continue;
     Eigen::Vector2d x;
     if (!intersect(u, v, x)) continue;
@@ -78,8 +75,8 @@ std::vector<Corner> find_corners(std::vector<Wall>& walls, bool full_circle,
       v.start_laser = x;
     } else {
       // The vertex is not seen: it must lie on the walls' extensions, beyond both ends.
-      if (direction(u).dot(x - u.end_laser) < -params.max_gap_m ||
-          direction(v).dot(v.start_laser - x) < -params.max_gap_m)
+      if (u.direction_laser().dot(x - u.end_laser) < -params.max_gap_m ||
+          v.direction_laser().dot(v.start_laser - x) < -params.max_gap_m)
         continue;
       c.type = CornerType::kPotential;
     }

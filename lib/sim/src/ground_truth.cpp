@@ -4,12 +4,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "indoormap/core/angles.hpp"
 #include "indoormap/core/errors.hpp"
 
 namespace indoormap::sim {
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 bool is_round(const Furniture& f) {
   return f.type == FurnitureType::kBin || f.type == FurnitureType::kPillar ||
@@ -54,7 +54,8 @@ std::vector<TruthItem> furniture_truth(const Scene& scene) {
 
 TruthLayout truth_layout(const Scene& scene, const SceneGeometry& geometry, double cell_m,
                          double margin_m, std::int64_t max_cells) {
-  if (!(cell_m >= 0.001 && cell_m <= 10)) throw UsageError("truth cell size must be in [0.001, 10] m");
+  if (!(cell_m >= 0.001 && cell_m <= 10))
+    throw UsageError("truth cell size must be in [0.001, 10] m");
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const auto& s : geometry.solids) {
     if (s.furniture >= 0) continue;
@@ -70,7 +71,8 @@ TruthLayout truth_layout(const Scene& scene, const SceneGeometry& geometry, doub
   lo.array() -= margin_m;
   hi.array() += margin_m;
   lo = (lo / cell_m).array().floor() * cell_m;
-  const double w = std::ceil((hi.x() - lo.x()) / cell_m - 1e-9), h = std::ceil((hi.y() - lo.y()) / cell_m - 1e-9);
+  const double w = std::ceil((hi.x() - lo.x()) / cell_m - 1e-9),
+               h = std::ceil((hi.y() - lo.y()) / cell_m - 1e-9);
   if (w * h > static_cast<double>(max_cells))
     throw BudgetError("truth layout: " + std::to_string(static_cast<long long>(w * h)) +
                       " cells exceed the budget; use a coarser cell");

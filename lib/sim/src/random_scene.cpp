@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "indoormap/core/angles.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/core/polygon.hpp"
 #include "indoormap/sim/simulate.hpp"
@@ -11,7 +12,6 @@
 namespace indoormap::sim {
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 using V2 = Eigen::Vector2d;
 

@@ -6,13 +6,13 @@
 #include <numbers>
 #include <set>
 
+#include "indoormap/core/angles.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/core/polygon.hpp"
 
 namespace indoormap::sim {
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 struct TypeName {
   FurnitureType type;

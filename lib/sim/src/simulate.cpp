@@ -4,6 +4,7 @@
 #include <limits>
 #include <numbers>
 
+#include "indoormap/core/angles.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/sim/world.hpp"
 #include "simulate_detail.hpp"
@@ -11,7 +12,6 @@
 namespace indoormap::sim {
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 std::uint64_t splitmix64(std::uint64_t& x) {
   std::uint64_t z = (x += 0x9e3779b97f4a7c15ULL);

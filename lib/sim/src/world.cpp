@@ -5,12 +5,12 @@
 #include <limits>
 #include <numbers>
 
+#include "indoormap/core/angles.hpp"
 #include "indoormap/core/errors.hpp"
 
 namespace indoormap::sim {
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 Solid prism(Polygon footprint, double z0, double z1, int furniture, int room = -1) {
@@ -83,7 +83,8 @@ std::vector<Solid> furniture_solids(const Scene& scene, int i) {
       break;
     case FurnitureType::kChair: {
       const double seat = 0.05, back = 0.04;
-      out.push_back(prism(rectangle(f.center_m, f.size_m, yaw), f.seat_height_m - seat, f.seat_height_m, i));
+      out.push_back(
+          prism(rectangle(f.center_m, f.size_m, yaw), f.seat_height_m - seat, f.seat_height_m, i));
       legs(0.03, 0.02, f.seat_height_m - seat);
       const Eigen::Vector2d bc = f.center_m - u * (half.x() - back / 2);
       out.push_back(prism(rectangle(bc, {back, f.size_m.y()}, yaw), f.seat_height_m, h, i));
@@ -93,7 +94,8 @@ std::vector<Solid> furniture_solids(const Scene& scene, int i) {
       out.push_back(cylinder(f.center_m, f.radius_m, 0.0, h, i));
       break;
     case FurnitureType::kPillar:
-      out.push_back(cylinder(f.center_m, f.radius_m, 0.0, f.height_m > 0 ? f.height_m : ceil + 0.01, i));
+      out.push_back(
+          cylinder(f.center_m, f.radius_m, 0.0, f.height_m > 0 ? f.height_m : ceil + 0.01, i));
       break;
     case FurnitureType::kLamp: {
       const double th = f.thickness_m > 0 ? f.thickness_m : 0.06;
@@ -105,7 +107,8 @@ std::vector<Solid> furniture_solids(const Scene& scene, int i) {
         out.push_back(prism(rectangle(f.center_m, f.size_m, yaw), z0, z1, i));
         if (f.drop_m > 0)
           for (int s : {-1, 1})
-            out.push_back(cylinder(f.center_m + u * (s * 0.35 * f.size_m.x()), 0.004, z1, ceil + 0.01, i));
+            out.push_back(
+                cylinder(f.center_m + u * (s * 0.35 * f.size_m.x()), 0.004, z1, ceil + 0.01, i));
       }
       break;
     }
@@ -139,7 +142,8 @@ SceneGeometry build_geometry(const Scene& scene) {
       outer[i] = P[i] + t * (n1 + n2) / (1.0 + n1.dot(n2));
     }
     for (int i = 0; i < n; ++i)
-      g.solids.push_back(prism({P[i], outer[i], outer[(i + 1) % n], P[(i + 1) % n]}, 0.0, z1, -1, static_cast<int>(r)));
+      g.solids.push_back(prism({P[i], outer[i], outer[(i + 1) % n], P[(i + 1) % n]}, 0.0, z1, -1,
+                               static_cast<int>(r)));
   }
   // 2. Openings cut every full-height wall piece that holds their centre (the host room's wall
   // and, for a shared wall, the neighbour's).
@@ -154,17 +158,22 @@ SceneGeometry build_geometry(const Scene& scene) {
         const std::size_t count = g.solids.size();
         for (std::size_t k = 0; k < count; ++k) {
           Solid& w = g.solids[k];
-          if (w.furniture >= 0 || w.z0_m != 0.0 || w.z1_m <= o.bottom_m || !contains(w.footprint, centre)) continue;
+          if (w.furniture >= 0 || w.z0_m != 0.0 || w.z1_m <= o.bottom_m ||
+              !contains(w.footprint, centre))
+            continue;
           const Solid piece = w;
           Polygon before = clip_halfplane(piece.footprint, f.u, s0);
           Polygon after = clip_halfplane(piece.footprint, -f.u, -s1);
           Polygon middle = clip_halfplane(clip_halfplane(piece.footprint, -f.u, -s0), f.u, s1);
           std::vector<Solid> parts;
-          if (before.size() >= 3) parts.push_back(prism(before, piece.z0_m, piece.z1_m, -1, piece.room));
-          if (after.size() >= 3) parts.push_back(prism(after, piece.z0_m, piece.z1_m, -1, piece.room));
+          if (before.size() >= 3)
+            parts.push_back(prism(before, piece.z0_m, piece.z1_m, -1, piece.room));
+          if (after.size() >= 3)
+            parts.push_back(prism(after, piece.z0_m, piece.z1_m, -1, piece.room));
           if (middle.size() >= 3) {
             if (o.bottom_m > 0) parts.push_back(prism(middle, 0.0, o.bottom_m, -1, piece.room));
-            if (o.top_m < piece.z1_m) parts.push_back(prism(middle, o.top_m, piece.z1_m, -1, piece.room));
+            if (o.top_m < piece.z1_m)
+              parts.push_back(prism(middle, o.top_m, piece.z1_m, -1, piece.room));
             if (kind == 0) g.door_floors.push_back(middle);
           }
           if (parts.empty()) continue;
@@ -186,7 +195,8 @@ SceneGeometry build_geometry(const Scene& scene) {
     c.polygon = room.polygon;
     c.room = static_cast<int>(r);
     const double s = std::tan(room.ceiling.slope_deg * kDeg);
-    const Eigen::Vector2d dir(std::cos(room.ceiling.rise_azimuth_deg * kDeg), std::sin(room.ceiling.rise_azimuth_deg * kDeg));
+    const Eigen::Vector2d dir(std::cos(room.ceiling.rise_azimuth_deg * kDeg),
+                              std::sin(room.ceiling.rise_azimuth_deg * kDeg));
     double lowest = kInf;
     for (const auto& v : room.polygon) lowest = std::min(lowest, dir.dot(v));
     c.ceiling_g = s * dir;
@@ -220,7 +230,8 @@ RayCaster::RayCaster(const SceneGeometry& geometry, double cell_m) : caps_(geome
       boxes.emplace_back(s.center_m.array() - s.radius_m, s.center_m.array() + s.radius_m);
     } else {
       const auto& F = s.footprint;
-      if (F.size() > 8) throw Error("ray caster: wall or furniture prism with more than 8 vertices");
+      if (F.size() > 8)
+        throw Error("ray caster: wall or furniture prism with more than 8 vertices");
       p.kind = 0;
       p.n = static_cast<std::uint8_t>(F.size());
       for (std::size_t k = 0; k < F.size(); ++k) {
@@ -261,10 +272,14 @@ RayCaster::RayCaster(const SceneGeometry& geometry, double cell_m) : caps_(geome
 
   // Counting pass, then filling pass (CSR).
   auto cell_range = [&](const std::pair<Eigen::Vector2d, Eigen::Vector2d>& box) {
-    const int c0 = std::clamp(static_cast<int>(std::floor((box.first.x() - lo_.x()) / cell_m_)), 0, width_ - 1);
-    const int c1 = std::clamp(static_cast<int>(std::floor((box.second.x() - lo_.x()) / cell_m_)), 0, width_ - 1);
-    const int r0 = std::clamp(static_cast<int>(std::floor((box.first.y() - lo_.y()) / cell_m_)), 0, height_ - 1);
-    const int r1 = std::clamp(static_cast<int>(std::floor((box.second.y() - lo_.y()) / cell_m_)), 0, height_ - 1);
+    const int c0 = std::clamp(static_cast<int>(std::floor((box.first.x() - lo_.x()) / cell_m_)), 0,
+                              width_ - 1);
+    const int c1 = std::clamp(static_cast<int>(std::floor((box.second.x() - lo_.x()) / cell_m_)), 0,
+                              width_ - 1);
+    const int r0 = std::clamp(static_cast<int>(std::floor((box.first.y() - lo_.y()) / cell_m_)), 0,
+                              height_ - 1);
+    const int r1 = std::clamp(static_cast<int>(std::floor((box.second.y() - lo_.y()) / cell_m_)), 0,
+                              height_ - 1);
     return std::array<int, 4>{c0, c1, r0, r1};
   };
   const std::size_t ncells = static_cast<std::size_t>(width_) * height_;
@@ -280,12 +295,14 @@ RayCaster::RayCaster(const SceneGeometry& geometry, double cell_m) : caps_(geome
   for (std::size_t b = 0; b < boxes.size(); ++b) {
     const auto [c0, c1, r0, r1] = cell_range(boxes[b]);
     for (int r = r0; r <= r1; ++r)
-      for (int c = c0; c <= c1; ++c) items_[fill[static_cast<std::size_t>(r) * width_ + c]++] = static_cast<std::uint32_t>(b);
+      for (int c = c0; c <= c1; ++c)
+        items_[fill[static_cast<std::size_t>(r) * width_ + c]++] = static_cast<std::uint32_t>(b);
   }
   mailbox_.assign(prims_.size(), 0);
 }
 
-double RayCaster::intersect(const Prim& p, const Eigen::Vector3d& o, const Eigen::Vector3d& d) const {
+double RayCaster::intersect(const Prim& p, const Eigen::Vector3d& o,
+                            const Eigen::Vector3d& d) const {
   double t0 = -kInf, t1 = kInf;
   // Vertical extent (slab).
   if (p.kind != 2) {
@@ -356,7 +373,8 @@ double RayCaster::intersect(const Prim& p, const Eigen::Vector3d& o, const Eigen
   return kInf;
 }
 
-std::optional<RayCaster::Hit> RayCaster::cast(const Eigen::Vector3d& o, const Eigen::Vector3d& d, double t_max) {
+std::optional<RayCaster::Hit> RayCaster::cast(const Eigen::Vector3d& o, const Eigen::Vector3d& d,
+                                              double t_max) {
   if (++ray_id_ == 0) {  // wrapped: forget every mailbox entry
     std::fill(mailbox_.begin(), mailbox_.end(), 0);
     ray_id_ = 1;

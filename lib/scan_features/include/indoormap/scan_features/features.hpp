@@ -70,6 +70,8 @@ struct Wall {
   int first_beam = 0, last_beam = 0;
   double rms_m = 0.0;  ///< of the TLS fit
   double length_m() const { return (end_laser - start_laser).norm(); }
+  /// Unit vector from start to end, laser frame.
+  Eigen::Vector2d direction_laser() const { return (end_laser - start_laser).normalized(); }
 };
 
 /// A door as the gap between its jambs a and b (a first in wall order).
