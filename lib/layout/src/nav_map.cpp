@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <numbers>
 #include <opencv2/imgproc.hpp>
 
@@ -212,9 +210,6 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
                       col.layers[i] >= min_span || nb >= p.min_neighbours;
       occupied.data[i] = ok;
       r.specks_dropped += !ok;
-      if (std::getenv("IM_NAV_DUMP"))
-        std::fprintf(stderr, "NAVDUMP %d %d %u %d %d %d\n", c, row, col.points[i],
-                     col.hi[i] - col.lo[i] + 1, nb, int(ok));
     }
   // Far from a scanner the floor's returns thin out into lines with gaps of a cell or two: close
   // them (a square closing of floor_closing_cells), never across an occupied cell.
