@@ -92,9 +92,9 @@ Figures figures(const fs::path& result, const json& truth) {
 
 // map-eval's eval.json of a pcd-to-map result against a scene-sim truth directory.
 json map_eval(const fs::path& sim, const fs::path& result) {
-  const auto r = run_app("map-eval", "--truth " + (sim / "ground_truth.json").string() +
-                                         " --result " + result.string() + " -o " +
-                                         (result / "eval").string());
+  const auto r =
+      run_app("map-eval", "--truth " + (sim / "ground_truth.json").string() + " --result " +
+                              result.string() + " -o " + (result / "eval").string());
   EXPECT_EQ(r.exit_code, 0) << r.err;
   return read_json(result / "eval" / "eval.json");
 }
@@ -163,9 +163,9 @@ TEST(FloorsApp, FourRoomsMobileWithAndWithoutTrajectory) {
       run_app("scene-sim", "--random --rooms 4 --mobile --seed 1 -q -o " + (dir / "sim").string());
   ASSERT_EQ(sim.exit_code, 0) << sim.err;
   const std::string cloud = (dir / "sim" / "cloud.pcd").string();
-  const auto a = run_app("pcd-to-map", cloud + " --trajectory " +
-                                           (dir / "sim" / "trajectory.txt").string() + " -q -o " +
-                                           (dir / "traj").string());
+  const auto a =
+      run_app("pcd-to-map", cloud + " --trajectory " + (dir / "sim" / "trajectory.txt").string() +
+                                " -q -o " + (dir / "traj").string());
   ASSERT_EQ(a.exit_code, 0) << a.err;
   const auto b = run_app("pcd-to-map", cloud + " -q -o " + (dir / "none").string());
   ASSERT_EQ(b.exit_code, 0) << b.err;

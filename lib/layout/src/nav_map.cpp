@@ -85,7 +85,7 @@ Columns scan_columns(const cloud::VoxelGrid& g, std::int64_t floor_lo, std::int6
   const std::size_t n = static_cast<std::size_t>(g.layer_size());
   Columns c{std::vector<std::uint32_t>(n, 0), std::vector<std::int32_t>(n, -1),
             std::vector<std::int32_t>(n, -1), std::vector<std::uint16_t>(n, 0),
-            std::vector<std::uint8_t>(n, 0), std::vector<std::uint8_t>(n, 0)};
+            std::vector<std::uint8_t>(n, 0),  std::vector<std::uint8_t>(n, 0)};
   const auto [dmin, dmax] = std::minmax_element(off.begin(), off.end());
   const std::int64_t z0 = std::max<std::int64_t>(0, floor_lo + (n ? *dmin : 0));
   const std::int64_t z1 = std::min<std::int64_t>(g.nz - 1, body_hi + (n ? *dmax : 0));

@@ -1,10 +1,10 @@
 #include "indoormap/layout/pipeline.hpp"
 
-#include "indoormap/layout/nearest_origin.hpp"
-
 #include <chrono>
 #include <cmath>
 #include <span>
+
+#include "indoormap/layout/nearest_origin.hpp"
 
 namespace indoormap::layout {
 

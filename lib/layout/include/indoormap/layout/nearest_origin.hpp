@@ -9,8 +9,8 @@
 namespace indoormap::layout {
 
 struct NearestOriginResult {
-  bool applied = false;    ///< origins set (at least 2 positions, points, and few enough)
-  std::size_t spans = 0;   ///< origin spans written (positions that got points)
+  bool applied = false;   ///< origins set (at least 2 positions, points, and few enough)
+  std::size_t spans = 0;  ///< origin spans written (positions that got points)
   double lookup_cell_m = 0.0;
 };
 
