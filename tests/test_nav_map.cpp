@@ -2,10 +2,13 @@
 // hand-built voxel grids.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "indoormap/core/errors.hpp"
 #include "indoormap/layout/nav_map.hpp"
+#include "indoormap/layout/nearest_origin.hpp"
 #include "indoormap/layout/storeys.hpp"
 
 using namespace indoormap;
@@ -71,6 +74,47 @@ TEST(NavMap, BodyBandSpecksAndDoorUnderLintel) {
   EXPECT_EQ(at(rays, 30, 3), Cell::kUnknown) << "behind the wall: no evidence";
   EXPECT_EQ(at(rays, 39, 10), Cell::kWall);
   EXPECT_GT(rays.cells_ray_free, 0);
+}
+
+// Two positions 10 m apart: each point goes to its nearest (the other is more than 1.5 m
+// farther), the points are reordered by origin, none lost. Positions 0.5 m apart: a point may
+// take any of those within 1.5 m of its nearest, never a farther one.
+TEST(NearestOrigin, TerrestrialNearestTrajectoryAmongTheNear) {
+  PointCloud c;
+  c.scanners = {{0, 0, 1}, {10, 0, 1}};
+  for (float x : {1.0f, 9.0f, 2.0f, 8.5f, 0.5f}) c.points.emplace_back(x, 0.3f, 0.5f);
+  const auto before = c.points;
+  const auto r = assign_nearest_origins(c);
+  ASSERT_TRUE(r.applied);
+  ASSERT_EQ(c.origins.size(), 2u);
+  for (const auto& o : c.origins)
+    for (std::size_t i = o.first; i < o.first + o.count; ++i)
+      EXPECT_EQ(o.scanner, c.points[i].x() < 5 ? 0u : 1u) << i;
+  EXPECT_EQ(c.origins[0].count + c.origins[1].count, before.size());
+  for (const auto& p : before)
+    EXPECT_NE(std::find(c.points.begin(), c.points.end(), p), c.points.end());
+
+  PointCloud t;
+  for (int k = 0; k <= 40; ++k) t.scanners.emplace_back(0.5 * k, 0.0, 1.0);  // 0..20 m
+  for (int i = 0; i < 400; ++i) t.points.emplace_back(0.05f * static_cast<float>(i), 1.0f, 0.2f);
+  ASSERT_TRUE(assign_nearest_origins(t).applied);
+  std::size_t covered = 0;
+  for (const auto& o : t.origins) {
+    covered += o.count;
+    for (std::size_t i = o.first; i < o.first + o.count; ++i) {
+      const double near = std::hypot(
+          std::clamp(std::round(t.points[i].x() / 0.5) * 0.5, 0.0, 20.0) - t.points[i].x(), 1.0);
+      const auto& s = t.scanners[o.scanner];
+      // 1.5 m margin, plus the 0.25 m lookup cell (candidates are per cell centre).
+      EXPECT_LE(std::hypot(s.x() - t.points[i].x(), s.y() - t.points[i].y()), near + 1.5 + 0.4);
+    }
+  }
+  EXPECT_EQ(covered, t.points.size());
+  EXPECT_GT(t.origins.size(), 20u) << "the points spread over many positions";
+  PointCloud one;
+  one.scanners = {{0, 0, 0}};
+  one.points = {{1, 1, 1}};
+  EXPECT_FALSE(assign_nearest_origins(one).applied) << "one position: nothing to estimate";
 }
 
 TEST(NavMap, ParametersAreValidated) {

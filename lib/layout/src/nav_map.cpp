@@ -39,6 +39,7 @@ namespace {
 struct Columns {
   std::vector<std::uint32_t> points;
   std::vector<std::int32_t> lo, hi;
+  std::vector<std::uint16_t> layers;  ///< body-band layers holding points
   std::vector<std::uint8_t> floor_seen, low_seen;
 };
 
@@ -83,8 +84,8 @@ Columns scan_columns(const cloud::VoxelGrid& g, std::int64_t floor_lo, std::int6
                      std::int64_t body_hi, const std::vector<std::int8_t>& off) {
   const std::size_t n = static_cast<std::size_t>(g.layer_size());
   Columns c{std::vector<std::uint32_t>(n, 0), std::vector<std::int32_t>(n, -1),
-            std::vector<std::int32_t>(n, -1), std::vector<std::uint8_t>(n, 0),
-            std::vector<std::uint8_t>(n, 0)};
+            std::vector<std::int32_t>(n, -1), std::vector<std::uint16_t>(n, 0),
+            std::vector<std::uint8_t>(n, 0),  std::vector<std::uint8_t>(n, 0)};
   const auto [dmin, dmax] = std::minmax_element(off.begin(), off.end());
   const std::int64_t z0 = std::max<std::int64_t>(0, floor_lo + (n ? *dmin : 0));
   const std::int64_t z1 = std::min<std::int64_t>(g.nz - 1, body_hi + (n ? *dmax : 0));
@@ -101,6 +102,7 @@ Columns scan_columns(const cloud::VoxelGrid& g, std::int64_t floor_lo, std::int6
         continue;
       }
       c.points[i] += k;
+      ++c.layers[i];
       if (c.lo[i] < 0) c.lo[i] = static_cast<std::int32_t>(zr);
       c.hi[i] = static_cast<std::int32_t>(zr);
     }
@@ -205,7 +207,7 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
               col.lo[static_cast<std::size_t>(row + dr) * w + c + dc] >= 0)
             ++nb;
       const bool ok = col.points[i] >= static_cast<std::uint32_t>(p.min_points) ||
-                      col.hi[i] - col.lo[i] + 1 >= min_span || nb >= p.min_neighbours;
+                      col.layers[i] >= min_span || nb >= p.min_neighbours;
       occupied.data[i] = ok;
       r.specks_dropped += !ok;
     }

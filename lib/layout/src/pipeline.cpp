@@ -4,6 +4,8 @@
 #include <cmath>
 #include <span>
 
+#include "indoormap/layout/nearest_origin.hpp"
+
 namespace indoormap::layout {
 
 namespace {
@@ -22,13 +24,24 @@ class Stopwatch {
 };
 
 // Rays need the scanner each point came from: one scanner sees everything; several need the
-// cloud's origin spans; without them the filter is skipped rather than run with the wrong one.
-void run_ghost_filter(const PointCloud& cloud, const cloud::GhostParams& params, MapResult& r) {
+// cloud's origin spans; where the input has none (a merged cloud with --scanner, a trajectory),
+// each point is taken as seen from its nearest position (nearest_origin.hpp) and the run says so.
+void run_ghost_filter(PointCloud& cloud, const cloud::GhostParams& params, MapResult& r) {
   if (cloud.scanners.size() == 1) {
     r.ghosts = cloud::remove_ghost_voxels(r.voxels, cloud.points, cloud.scanners[0], params);
     return;
   }
   if (!params.enabled || cloud.scanners.empty()) return;
+  if (cloud.origins.empty()) {
+    if (!assign_nearest_origins(cloud).applied) {
+      r.warnings.push_back("ghost filter skipped: " + std::to_string(cloud.scanners.size()) +
+                           " scanner positions and no record of which point came from which");
+      return;
+    }
+    r.warnings.push_back("ghost filter: " + std::to_string(cloud.scanners.size()) +
+                         " scanner positions and no record of which point came from which: "
+                         "each point taken as seen from its nearest position");
+  }
   std::vector<cloud::RaySource> sources;
   std::size_t covered = 0;
   const std::span<const Eigen::Vector3f> all(cloud.points);
@@ -42,7 +55,7 @@ void run_ghost_filter(const PointCloud& cloud, const cloud::GhostParams& params,
     return;
   }
   r.warnings.push_back("ghost filter skipped: " + std::to_string(cloud.scanners.size()) +
-                       " scanner positions and no record of which point came from which");
+                       " scanner positions and the origin of some points unknown");
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "indoormap/sim/simulate.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -117,6 +118,16 @@ SimResult simulate_pattern(const Scene& scene, const SimOptions& options, std::u
     }
     prev_col.assign(n_el, kNone);
     cur_col.assign(n_el, kNone);
+    // A mixed pixel is one beam's footprint straddling a depth edge: only a neighbour ray within
+    // the footprint's scale (twice the terrestrial step) tells of one. The mobile pattern's rows
+    // lie degrees apart: two floor returns of neighbouring rows differ by more than the jump
+    // without any edge between them (a phantom point 0.1-0.3 m above the floor).
+    const double adjacent_deg = 2.0 * std::max(sp.azimuth_step_deg, sp.elevation_step_deg);
+    std::vector<std::uint8_t> row_adjacent(static_cast<std::size_t>(n_el), 0);
+    for (int j = 1; j < n_el; ++j)
+      row_adjacent[static_cast<std::size_t>(j)] =
+          std::abs(pat.elevation_deg[j] - pat.elevation_deg[j - 1]) <= adjacent_deg;
+    const bool columns_adjacent = pat.azimuth_step_deg <= adjacent_deg;
     const Eigen::Vector3d origin = scene.scanners[s].position_m;
     const Eigen::Vector3d origin_tilted = R * origin;
     out.scanner_positions_m.push_back(origin_tilted);
@@ -144,8 +155,8 @@ SimResult simulate_pattern(const Scene& scene, const SimOptions& options, std::u
         const auto hit = caster.cast(origin, d_scene, sp.range_max_m);
         const double t = hit ? hit->t_m : kNone;
         cur_col[j] = t;
-        const double left = prev_col[j];
-        const double below = above;
+        const double left = columns_adjacent ? prev_col[j] : kNone;
+        const double below = row_adjacent[static_cast<std::size_t>(j)] ? above : kNone;
         above = t;
         if (!hit || t < sp.range_min_m) continue;
         double range = t;

@@ -1,0 +1,95 @@
+#include "indoormap/layout/nearest_origin.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace indoormap::layout {
+
+NearestOriginResult assign_nearest_origins(PointCloud& cloud) {
+  NearestOriginResult r;
+  const std::size_t ns = cloud.scanners.size();
+  if (ns < 2 || ns > 65535 || cloud.points.empty()) return r;
+  float x0 = std::numeric_limits<float>::max(), y0 = x0, x1 = -x0, y1 = -x0;
+  for (const auto& p : cloud.points) {
+    if (!p.allFinite()) continue;
+    x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x());
+    y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
+  }
+  if (x0 > x1) return r;
+  // Lookup cells of 0.25 m, coarser while cells x positions exceed 2e8 distance tests.
+  double cell = 0.25;
+  auto cells_of = [&](double c) {
+    return std::make_pair(static_cast<std::int64_t>((x1 - x0) / c) + 1,
+                          static_cast<std::int64_t>((y1 - y0) / c) + 1);
+  };
+  while (true) {
+    const auto [w, h] = cells_of(cell);
+    if (static_cast<double>(w) * static_cast<double>(h) * static_cast<double>(ns) <= 2e8) break;
+    cell *= 2.0;
+  }
+  const auto [w, h] = cells_of(cell);
+  // Per cell, the candidates: the positions within kMarginM of the nearest one (at most
+  // kMaxCandidates, nearest first). Terrestrial positions metres apart leave one; a trajectory
+  // leaves those around the point, on both sides of a door when it lies near one.
+  constexpr double kMarginM = 1.5;
+  constexpr std::size_t kMaxCandidates = 16;
+  std::vector<std::uint32_t> first(static_cast<std::size_t>(w * h) + 1, 0);
+  std::vector<std::uint16_t> cand;
+  std::vector<std::pair<double, std::uint16_t>> d2(ns);
+  for (std::int64_t row = 0; row < h; ++row)
+    for (std::int64_t col = 0; col < w; ++col) {
+      const double cx = x0 + (col + 0.5) * cell, cy = y0 + (row + 0.5) * cell;
+      for (std::size_t k = 0; k < ns; ++k)
+        d2[k] = {std::hypot(cloud.scanners[k].x() - cx, cloud.scanners[k].y() - cy),
+                 static_cast<std::uint16_t>(k)};
+      const std::size_t m = std::min(kMaxCandidates, ns);
+      std::partial_sort(d2.begin(), d2.begin() + static_cast<std::ptrdiff_t>(m), d2.end());
+      for (std::size_t k = 0; k < m && d2[k].first <= d2[0].first + kMarginM; ++k)
+        cand.push_back(d2[k].second);
+      first[static_cast<std::size_t>(row * w + col) + 1] = static_cast<std::uint32_t>(cand.size());
+    }
+  const std::size_t n = cloud.points.size();
+  std::vector<std::uint16_t> label(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& p = cloud.points[i];
+    if (!p.allFinite()) continue;  // any label: the voxel grid ignores it
+    const auto col =
+        std::clamp<std::int64_t>(static_cast<std::int64_t>((p.x() - x0) / cell), 0, w - 1);
+    const auto row =
+        std::clamp<std::int64_t>(static_cast<std::int64_t>((p.y() - y0) / cell), 0, h - 1);
+    const std::size_t c = static_cast<std::size_t>(row * w + col);
+    const std::uint32_t k = first[c + 1] - first[c];
+    // A fixed scramble of the point index picks among the candidates: deterministic.
+    const std::uint64_t pick = (static_cast<std::uint64_t>(i) * 0x9E3779B97F4A7C15ULL) >> 40;
+    label[i] = cand[first[c] + static_cast<std::uint32_t>(pick % k)];
+  }
+  // In-place counting sort (American flag): bucket k is [begin[k], begin[k + 1]).
+  std::vector<std::size_t> begin(ns + 1, 0);
+  for (const auto l : label) ++begin[l + 1u];
+  for (std::size_t k = 0; k < ns; ++k) begin[k + 1] += begin[k];
+  std::vector<std::size_t> next(begin.begin(), begin.end() - 1);
+  for (std::size_t k = 0; k < ns; ++k)
+    while (next[k] < begin[k + 1]) {
+      const std::size_t i = next[k];
+      const std::uint16_t l = label[i];
+      if (l == k) {
+        ++next[k];
+        continue;
+      }
+      const std::size_t j = next[l]++;
+      std::swap(cloud.points[i], cloud.points[j]);
+      std::swap(label[i], label[j]);
+    }
+  cloud.origins.clear();
+  for (std::size_t k = 0; k < ns; ++k)
+    if (begin[k + 1] > begin[k]) cloud.origins.push_back({begin[k], begin[k + 1] - begin[k], k});
+  r.applied = true;
+  r.spans = cloud.origins.size();
+  r.lookup_cell_m = cell;
+  return r;
+}
+
+}  // namespace indoormap::layout
