@@ -1,0 +1,181 @@
+#include "indoormap/rooms/rooms.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <utility>
+
+#include "indoormap/areas/rooms.hpp"
+#include "indoormap/border/polygon.hpp"
+#include "indoormap/core/cell_rings.hpp"
+#include "indoormap/core/errors.hpp"
+
+namespace indoormap::rooms {
+
+namespace {
+
+void rooms_require(bool ok, const std::string& key, const std::string& what) {
+  if (!ok) throw UsageError("invalid parameter rooms." + key + ": " + what);
+}
+
+/// The room's closed polygon: the cells of `id` at half-cell resolution, grown by one half cell
+/// (4-neighbours), traced; the largest outer ring, simplified by 0.75 cell (staircases of a
+/// rotated wall become its line; a vertex moves at most that far).
+Polygon rooms_outline(const Grid<std::uint16_t>& labels, const GridGeometry& g, int id, int c0,
+                      int r0, int c1, int r1) {
+  const int w = (c1 - c0 + 3) * 2, h = (r1 - r0 + 3) * 2;  // one cell margin all round
+  std::vector<unsigned char> fine(static_cast<std::size_t>(w) * h, 0);
+  for (int r = r0; r <= r1; ++r)
+    for (int c = c0; c <= c1; ++c) {
+      if (labels.at(c, r) != id) continue;
+      const int fc = (c - c0 + 1) * 2, fr = (r - r0 + 1) * 2;
+      for (int dr = -1; dr <= 2; ++dr)
+        for (int dc = -1; dc <= 2; ++dc) {
+          const bool corner = (dr == -1 || dr == 2) && (dc == -1 || dc == 2);
+          if (!corner) fine[static_cast<std::size_t>(fr + dr) * w + fc + dc] = 1;
+        }
+    }
+  const CellRings rings = trace_mask_rings(fine, 0, 0, w, h);
+  const CellRing* best = nullptr;
+  double best_area = 0.0;
+  for (const auto& ring : rings.outer) {
+    const double a = std::abs(signed_area(ring));
+    if (a > best_area) best_area = a, best = &ring;
+  }
+  if (!best) return {};
+  Polygon poly;
+  poly.reserve(best->size());
+  for (const auto& v : *best)  // fine cell coords -> grid cell coords -> map frame
+    poly.push_back(g.from_cell_coords(v / 2.0 + Eigen::Vector2d(c0 - 1, r0 - 1)));
+  Polygon simple = border::simplify_closed(poly, 0.75 * g.cell_m());
+  if (simple.size() >= 3 && signed_area(simple) > 0.0) return simple;
+  return poly;
+}
+
+/// Doors: the 4-neighbour pairs of cells of two rooms, per pair of rooms; end points are the
+/// extremes along the border's main axis.
+std::vector<RoomDoor> rooms_doors(const Grid<std::uint16_t>& labels, const GridGeometry& g) {
+  std::map<std::pair<int, int>, std::vector<Eigen::Vector2d>> borders;
+  for (int r = 0; r < labels.height; ++r)
+    for (int c = 0; c < labels.width; ++c) {
+      const int a = labels.at(c, r);
+      if (a == 0) continue;
+      for (const auto& [dc, dr] : {std::pair{1, 0}, std::pair{0, 1}}) {
+        if (!labels.contains(c + dc, r + dr)) continue;
+        const int b = labels.at(c + dc, r + dr);
+        if (b == 0 || b == a) continue;
+        const Eigen::Vector2d mid = 0.5 * (g.center_of({c, r}) + g.center_of({c + dc, r + dr}));
+        borders[{std::min(a, b), std::max(a, b)}].push_back(mid);
+      }
+    }
+  std::vector<RoomDoor> doors;
+  for (const auto& [ab, pts] : borders) {
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+    for (const auto& p : pts) mean += p;
+    mean /= static_cast<double>(pts.size());
+    Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+    for (const auto& p : pts) cov += (p - mean) * (p - mean).transpose();
+    Eigen::Vector2d axis(1.0, 0.0);
+    if (pts.size() > 1) {
+      const double angle = 0.5 * std::atan2(2.0 * cov(0, 1), cov(0, 0) - cov(1, 1));
+      axis = {std::cos(angle), std::sin(angle)};
+    }
+    double lo = 0.0, hi = 0.0;
+    for (const auto& p : pts) {
+      const double t = (p - mean).dot(axis);
+      lo = std::min(lo, t), hi = std::max(hi, t);
+    }
+    RoomDoor d;
+    d.a = ab.first, d.b = ab.second;
+    d.end0_m = mean + (lo - 0.5 * g.cell_m()) * axis;
+    d.end1_m = mean + (hi + 0.5 * g.cell_m()) * axis;
+    d.width_m = hi - lo + g.cell_m();
+    d.shared_cells = static_cast<int>(pts.size());
+    doors.push_back(d);
+  }
+  return doors;
+}
+
+}  // namespace
+
+void validate(const RoomsParams& p) {
+  areas::validate(p.segmentation);
+  rooms_require(p.min_room_area_m2 >= 0.0, "min_room_area_m2", "must be >= 0");
+  rooms_require(p.inner_wall_max_width_m >= 0.0, "inner_wall_max_width_m", "must be >= 0");
+  rooms_require(p.inner_wall_reach_m >= 0.0 && p.inner_wall_reach_m <= 1.0, "inner_wall_reach_m",
+                "must be in [0, 1]");
+}
+
+RoomsResult find_rooms(const Grid<Cell>& nav, const GridGeometry& g, const RoomsParams& p) {
+  validate(p);
+  RoomsResult out;
+  out.geometry = g;
+  out.labels = Grid<std::uint16_t>(nav.width, nav.height, 0);
+  Grid<std::uint8_t> free(nav.width, nav.height, 0);
+  bool any = false;
+  for (std::size_t i = 0; i < nav.data.size(); ++i)
+    if (nav.data[i] == Cell::kFree) free.data[i] = 1, any = true;
+  if (!any) return out;
+  int count = 0;
+  const Grid<int> seg = areas::segment_rooms(free, g.cell_m(), p.segmentation, &count);
+  // Pieces, their cell counts and boxes; small ones are no room; ids renumbered 1.. in order.
+  struct Box {
+    int cells = 0, c0 = 1 << 30, r0 = 1 << 30, c1 = -1, r1 = -1;
+  };
+  std::vector<Box> boxes(static_cast<std::size_t>(count) + 1);
+  for (int r = 0; r < seg.height; ++r)
+    for (int c = 0; c < seg.width; ++c) {
+      const int l = seg.at(c, r);
+      if (l <= 0 || l > count) continue;
+      Box& b = boxes[static_cast<std::size_t>(l)];
+      ++b.cells, b.c0 = std::min(b.c0, c), b.r0 = std::min(b.r0, r);
+      b.c1 = std::max(b.c1, c), b.r1 = std::max(b.r1, r);
+    }
+  const double cell_area = g.cell_m() * g.cell_m();
+  std::vector<int> new_id(boxes.size(), 0);
+  int n = 0;
+  for (std::size_t l = 1; l < boxes.size(); ++l)
+    if (boxes[l].cells > 0 && boxes[l].cells * cell_area >= p.min_room_area_m2) new_id[l] = ++n;
+  for (std::size_t i = 0; i < seg.data.size(); ++i) {
+    const int l = seg.data[i];
+    if (l > 0 && l <= count) out.labels.data[i] = static_cast<std::uint16_t>(new_id[l]);
+  }
+  for (std::size_t l = 1; l < boxes.size(); ++l) {
+    if (new_id[l] == 0) continue;
+    const Box& b = boxes[l];
+    Room room;
+    room.id = new_id[l];
+    room.cells = b.cells;
+    room.polygon_m = rooms_outline(out.labels, g, room.id, b.c0, b.r0, b.c1, b.r1);
+    room.area_m2 = std::abs(signed_area(room.polygon_m));
+    room.perimeter_m = perimeter(room.polygon_m);
+    out.rooms.push_back(std::move(room));
+  }
+  out.doors = rooms_doors(out.labels, g);
+  for (const auto& d : out.doors) {
+    out.rooms[static_cast<std::size_t>(d.a - 1)].neighbours.push_back(d.b);
+    out.rooms[static_cast<std::size_t>(d.b - 1)].neighbours.push_back(d.a);
+  }
+  for (auto& r : out.rooms) std::sort(r.neighbours.begin(), r.neighbours.end());
+  return out;
+}
+
+int room_at(const RoomsResult& rooms, const Eigen::Vector2d& p, double max_m) {
+  for (const auto& r : rooms.rooms)
+    if (contains(r.polygon_m, p)) return r.id;
+  const GridGeometry& g = rooms.geometry;
+  const CellIndex at = g.cell_of(p);
+  const int reach = static_cast<int>(std::ceil(max_m / g.cell_m()));
+  int best = 0;
+  double best_d2 = max_m * max_m;
+  for (int r = at.row - reach; r <= at.row + reach; ++r)
+    for (int c = at.col - reach; c <= at.col + reach; ++c) {
+      if (!rooms.labels.contains(c, r) || rooms.labels.at(c, r) == 0) continue;
+      const double d2 = (g.center_of({c, r}) - p).squaredNorm();
+      if (d2 <= best_d2) best_d2 = d2, best = rooms.labels.at(c, r);
+    }
+  return best;
+}
+
+}  // namespace indoormap::rooms
