@@ -112,6 +112,7 @@ ordered_json evaluate_rooms_block(const formats::TruthFile& truth, const fs::pat
   // Objects per truth room: truth items (of at least min_truth_area_m2) and their matches, and
   // the result objects whose footprint centre lies in the room.
   ordered_json per_room = ordered_json::array();
+  int outside = 0;  // result objects whose centre lies in no truth room (in a wall, or outside)
   if (fs::exists(dir / "objects.json")) {
     const auto objs = formats::read_objects_json(dir / "objects.json");
     const sim::ObjectScores s = sim::evaluate_objects(truth.furniture, objs, op);
@@ -129,7 +130,10 @@ ordered_json evaluate_rooms_block(const formats::TruthFile& truth, const fs::pat
     for (const auto& o : objs) {
       if (!o.on_floor && !op.include_hanging) continue;
       const int k = eval_rooms_truth_at(truth, eval_rooms_centroid(o.footprint));
-      if (k < 0) continue;
+      if (k < 0) {
+        ++outside;
+        continue;
+      }
       ++r_n[static_cast<std::size_t>(k)];
       r_m[static_cast<std::size_t>(k)] += matched_result.count(o.id) ? 1 : 0;
     }

@@ -28,9 +28,9 @@ struct RoomsParams {
   /// Inner-wall strips among the objects (room_objects.hpp): an object whose oriented box is at
   /// most this wide ...
   double inner_wall_max_width_m = 0.45;
-  /// ... with cells of two different rooms within this distance of its cells is wall: furniture
-  /// stands in one room, and a wall (0.1 m or more) plus its face cells lie between it and the
-  /// next room.
+  /// ... with cells of two different rooms within this distance of most of its cells is wall:
+  /// furniture stands in one room, and a wall (0.1 m or more) plus its face cells lie between it
+  /// and the next room.
   double inner_wall_reach_m = 0.1;
 };
 
