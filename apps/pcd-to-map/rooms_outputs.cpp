@@ -1,5 +1,6 @@
 #include "rooms_outputs.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include "indoormap/draw/rooms_png.hpp"
@@ -18,6 +19,12 @@ StoreyRooms find_storey_rooms(const layout::MapResult& m, objects::ObjectsResult
   StoreyRooms r;
   r.rooms = rooms::find_rooms(m.nav.map, m.geometry, params);
   r.inner_walls = rooms::inner_wall_objects(objs, m.geometry, r.rooms, params);
+  // The polygons reach the walls of M_r (behind furniture too), never into an inner-wall strip.
+  Grid<std::uint8_t> blocked(objs.labels.width, objs.labels.height, 0);
+  for (std::size_t i = 0; i < objs.labels.data.size(); ++i)
+    blocked.data[i] = std::find(r.inner_walls.begin(), r.inner_walls.end(), objs.labels.data[i]) !=
+                      r.inner_walls.end();
+  rooms::fill_rooms(r.rooms, m.layout.layout, blocked);
   rooms::remove_objects(objs, r.inner_walls);
   r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return r;

@@ -51,8 +51,8 @@ std::vector<int> inner_wall_objects(const objects::ObjectsResult& objs, const Gr
     const auto& o = objs.objects[i];
     const bool standing = o.kind == ObjectKind::kFurniture || o.kind == ObjectKind::kHanging;
     if (!standing || !o.own_cells.empty()) continue;
-    // Most of a wall strip's cells have both rooms in reach; a cabinet beside a door has a few.
-    if (o.box.width_m <= params.inner_wall_max_width_m && all[i] > 0 && 2 * both[i] >= all[i])
+    // A wall strip has both rooms in reach along much of it; a cabinet beside a door at a corner.
+    if (o.box.width_m <= params.inner_wall_max_width_m && all[i] > 0 && 4 * both[i] >= all[i])
       ids.push_back(o.id);
   }
   return ids;

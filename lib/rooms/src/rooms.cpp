@@ -1,6 +1,7 @@
 #include "indoormap/rooms/rooms.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <string>
@@ -95,7 +96,67 @@ std::vector<RoomDoor> rooms_doors(const Grid<std::uint16_t>& labels, const GridG
   return doors;
 }
 
+/// Every room's polygon, area and perimeter from the cells of `cells` holding its id.
+void rooms_draw_polygons(RoomsResult& out, const Grid<std::uint16_t>& cells) {
+  const int n = static_cast<int>(out.rooms.size());
+  std::vector<std::array<int, 4>> box(static_cast<std::size_t>(n) + 1, {1 << 30, 1 << 30, -1, -1});
+  for (int r = 0; r < cells.height; ++r)
+    for (int c = 0; c < cells.width; ++c) {
+      const int l = cells.at(c, r);
+      if (l <= 0 || l > n) continue;
+      auto& b = box[static_cast<std::size_t>(l)];
+      b = {std::min(b[0], c), std::min(b[1], r), std::max(b[2], c), std::max(b[3], r)};
+    }
+  for (auto& room : out.rooms) {
+    const auto& b = box[static_cast<std::size_t>(room.id)];
+    if (b[2] < 0) continue;
+    room.polygon_m = rooms_outline(cells, out.geometry, room.id, b[0], b[1], b[2], b[3]);
+    room.area_m2 = std::abs(signed_area(room.polygon_m));
+    room.perimeter_m = perimeter(room.polygon_m);
+  }
+}
+
 }  // namespace
+
+void fill_rooms(RoomsResult& out, const Grid<Cell>& layout, const Grid<std::uint8_t>& blocked,
+                double max_fill_m) {
+  const Grid<std::uint16_t>& labels = out.labels;
+  if (layout.width != labels.width || layout.height != labels.height || out.rooms.empty()) return;
+  const bool has_blocked = blocked.width == labels.width && blocked.height == labels.height;
+  const auto stops = [&](int c, int r) {
+    const Cell l = layout.at(c, r);
+    return l == Cell::kWall || l == Cell::kUnknown || (has_blocked && blocked.at(c, r));
+  };
+  // A door's passage through the wall is free, but M_r has the lintel's wall or strip there:
+  // those cells leave the room's polygon (which ends at the wall's face).
+  Grid<std::uint16_t> grown = labels;
+  Grid<int> steps(labels.width, labels.height, 0);
+  std::vector<CellIndex> queue;
+  for (int r = 0; r < labels.height; ++r)
+    for (int c = 0; c < labels.width; ++c) {
+      if (!labels.at(c, r)) continue;
+      const Cell l = layout.at(c, r);
+      if (l == Cell::kWall || (has_blocked && blocked.at(c, r)))
+        grown.at(c, r) = 0;
+      else
+        queue.push_back({c, r});
+    }
+  const int max_steps = static_cast<int>(std::lround(max_fill_m / out.geometry.cell_m()));
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const CellIndex at = queue[head];
+    if (steps.at(at) >= max_steps) continue;
+    for (const auto& [dc, dr] :
+         {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+      const int c = at.col + dc, r = at.row + dr;
+      if (!grown.contains(c, r) || grown.at(c, r) != 0 || labels.at(c, r) != 0 || stops(c, r))
+        continue;
+      grown.at(c, r) = grown.at(at);
+      steps.at(c, r) = steps.at(at) + 1;
+      queue.push_back({c, r});
+    }
+  }
+  rooms_draw_polygons(out, grown);
+}
 
 void validate(const RoomsParams& p) {
   areas::validate(p.segmentation);
@@ -141,15 +202,12 @@ RoomsResult find_rooms(const Grid<Cell>& nav, const GridGeometry& g, const Rooms
   }
   for (std::size_t l = 1; l < boxes.size(); ++l) {
     if (new_id[l] == 0) continue;
-    const Box& b = boxes[l];
     Room room;
     room.id = new_id[l];
-    room.cells = b.cells;
-    room.polygon_m = rooms_outline(out.labels, g, room.id, b.c0, b.r0, b.c1, b.r1);
-    room.area_m2 = std::abs(signed_area(room.polygon_m));
-    room.perimeter_m = perimeter(room.polygon_m);
+    room.cells = boxes[l].cells;
     out.rooms.push_back(std::move(room));
   }
+  rooms_draw_polygons(out, out.labels);
   out.doors = rooms_doors(out.labels, g);
   for (const auto& d : out.doors) {
     out.rooms[static_cast<std::size_t>(d.a - 1)].neighbours.push_back(d.b);

@@ -12,8 +12,8 @@
 namespace indoormap::rooms {
 
 /// Ids of the objects that are inner walls: kind furniture, oriented box at most
-/// params.inner_wall_max_width_m wide, at least half of whose cells have cells of two different
-/// rooms within params.inner_wall_reach_m. objects_geometry: the grid of objs.labels (the
+/// params.inner_wall_max_width_m wide, at least a quarter of whose cells have cells of two
+/// different rooms within params.inner_wall_reach_m. objects_geometry: the grid of objs.labels (the
 /// layout's); the rooms' grid may differ (cells are matched by their centres).
 std::vector<int> inner_wall_objects(const objects::ObjectsResult& objs,
                                     const GridGeometry& objects_geometry, const RoomsResult& rooms,

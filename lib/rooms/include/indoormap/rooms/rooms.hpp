@@ -31,7 +31,7 @@ struct RoomsParams {
   /// ... with cells of two different rooms within this distance of most of its cells is wall:
   /// furniture stands in one room, and a wall (0.1 m or more) plus its face cells lie between it
   /// and the next room.
-  double inner_wall_reach_m = 0.1;
+  double inner_wall_reach_m = 0.15;
 };
 
 /// Throws UsageError naming the key (rooms.<key>).
@@ -65,6 +65,17 @@ struct RoomsResult {
 /// room (no exception). Throws UsageError for invalid params.
 RoomsResult find_rooms(const Grid<Cell>& nav, const GridGeometry& geometry,
                        const RoomsParams& params = {});
+
+/// Wall-bounded rooms: each room's cells grown (all rooms at once, 4-neighbours, first come
+/// first served) into the cells that are not free, up to max_fill_m, stopping at the wall cells
+/// of the room layout M_r (its wall band, seen above the furniture), at `blocked` cells (the
+/// inner-wall strips) and at other rooms' cells; the polygons (and areas, perimeters) are
+/// redrawn from the grown cells, so furniture and the unseen floor behind it along a wall no
+/// longer cut notches into them. Labels and doors stay those of the free space. layout and
+/// blocked (non-zero: blocked; may be empty) share the rooms' grid; a layout of another size
+/// leaves the rooms unchanged.
+void fill_rooms(RoomsResult& rooms, const Grid<Cell>& layout, const Grid<std::uint8_t>& blocked,
+                double max_fill_m = 1.0);
 
 /// The id of the room whose polygon holds p (map frame), else of the room with a labelled cell
 /// nearest p within max_m, else 0.
