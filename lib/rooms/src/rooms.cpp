@@ -116,6 +116,40 @@ void rooms_draw_polygons(RoomsResult& out, const Grid<std::uint16_t>& cells) {
   }
 }
 
+/// Door passages: room cells within 0.4 m of a door's line (across it) and within its span
+/// (plus two cells) that have cells outside every room on both sides along the door's axis,
+/// within the half width plus two cells. Inside a room, beside the wall face, the way along the
+/// wall is open; in the passage through the wall it is not.
+void rooms_cut_passages(const RoomsResult& out, Grid<std::uint16_t>& grown) {
+  const GridGeometry& g = out.geometry;
+  const Grid<std::uint16_t>& labels = out.labels;
+  const double cell = g.cell_m();
+  for (const auto& d : out.doors) {
+    const Eigen::Vector2d m = 0.5 * (d.end0_m + d.end1_m);
+    const double len = (d.end1_m - d.end0_m).norm();
+    if (len <= 0.0) continue;
+    const Eigen::Vector2d u = (d.end1_m - d.end0_m) / len, n(-u.y(), u.x());
+    const double half = 0.5 * len + 2.0 * cell, depth = 0.4;
+    const auto closed_at = [&](Eigen::Vector2d p, const Eigen::Vector2d& dir) {
+      for (double t = 0.0; t <= half + cell; t += 0.5 * cell) {
+        const CellIndex q = g.cell_of(p + t * dir);
+        if (!labels.contains(q.col, q.row) || labels.at(q) == 0) return true;
+      }
+      return false;
+    };
+    const CellIndex lo = g.cell_of(m - Eigen::Vector2d::Constant(half + depth));
+    const CellIndex hi = g.cell_of(m + Eigen::Vector2d::Constant(half + depth));
+    for (int r = std::max(lo.row, 0); r <= std::min(hi.row, labels.height - 1); ++r)
+      for (int c = std::max(lo.col, 0); c <= std::min(hi.col, labels.width - 1); ++c) {
+        const int id = labels.at(c, r);
+        if (id != d.a && id != d.b) continue;
+        const Eigen::Vector2d p = g.center_of({c, r});
+        if (std::abs((p - m).dot(n)) > depth || std::abs((p - m).dot(u)) > half) continue;
+        if (closed_at(p, u) && closed_at(p, -u)) grown.at(c, r) = 0;
+      }
+  }
+}
+
 }  // namespace
 
 void fill_rooms(RoomsResult& out, const Grid<Cell>& layout, const Grid<std::uint8_t>& blocked,
@@ -132,9 +166,10 @@ void fill_rooms(RoomsResult& out, const Grid<Cell>& layout, const Grid<std::uint
   Grid<std::uint16_t> grown = labels;
   Grid<int> steps(labels.width, labels.height, 0);
   std::vector<CellIndex> queue;
+  rooms_cut_passages(out, grown);
   for (int r = 0; r < labels.height; ++r)
     for (int c = 0; c < labels.width; ++c) {
-      if (!labels.at(c, r)) continue;
+      if (!grown.at(c, r)) continue;
       const Cell l = layout.at(c, r);
       if (l == Cell::kWall || (has_blocked && blocked.at(c, r)))
         grown.at(c, r) = 0;
