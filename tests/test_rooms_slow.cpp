@@ -10,8 +10,8 @@
 
 #include "test_support.hpp"
 
-using nlohmann::json;
 using indoormap::test::run_app;
+using nlohmann::json;
 
 namespace {
 
@@ -85,10 +85,16 @@ TEST(RoomsApp, TwoStoreysEachWithItsRooms) {
   ASSERT_EQ(e["storeys"].size(), 2u);
   for (const auto& s : e["storeys"]) {
     ASSERT_EQ(s["rooms"]["status"], "ok") << s.dump();
+    EXPECT_EQ(s["rooms"]["truth_rooms"], 5);
     EXPECT_EQ(s["rooms"]["missed"], 0);
+    EXPECT_EQ(s["rooms"]["merged"], 0);
     EXPECT_GE(s["rooms"]["found"].get<int>(), 4);
-    EXPECT_GE(s["rooms"]["doors_found_share"].get<double>(), 0.75);
   }
+  // Storey 0: every door. (Storey 1 at 0.5 degree steps: its navigation map keeps every door
+  // closed - floor.doors.open_share 0 - so its rooms have no doors and one room is split; at
+  // scene-sim's default steps both storeys open every door: docs/evaluation.md.)
+  EXPECT_EQ(e["storeys"][0]["rooms"]["doors_found"], 4);
+  EXPECT_EQ(e["storeys"][0]["rooms"]["found"], 5);
   for (int k = 0; k < 2; ++k)
     EXPECT_TRUE(fs::exists(out / ("storey_" + std::to_string(k)) / "rooms.geojson")) << k;
 }

@@ -30,6 +30,46 @@ int eval_rooms_truth_at(const formats::TruthFile& t, const Eigen::Vector2d& p) {
   return -1;
 }
 
+/// Objects per truth room: truth items (of at least min_truth_area_m2) and their matches, and
+/// the result objects whose footprint centre lies in the room; `outside` counts those in none.
+ordered_json eval_rooms_objects(const formats::TruthFile& truth, const fs::path& dir,
+                                const sim::EvalParams& op, int& outside) {
+  const std::size_t nt = truth.rooms.size();
+  ordered_json per_room = ordered_json::array();
+  if (fs::exists(dir / "objects.json")) {
+    const auto objs = formats::read_objects_json(dir / "objects.json");
+    const sim::ObjectScores s = sim::evaluate_objects(truth.furniture, objs, op);
+    std::map<std::string, bool> matched_truth, matched_result;
+    for (const auto& m : s.matches) matched_truth[m.truth_id] = matched_result[m.result_id] = true;
+    std::vector<int> t_n(nt, 0), t_m(nt, 0), r_n(nt, 0), r_m(nt, 0);
+    for (const auto& o : truth.furniture) {
+      if (!o.on_floor && !op.include_hanging) continue;
+      if (std::abs(signed_area(o.footprint)) < op.min_truth_area_m2) continue;
+      const int k = eval_rooms_truth_at(truth, eval_rooms_centroid(o.footprint));
+      if (k < 0) continue;
+      ++t_n[static_cast<std::size_t>(k)];
+      t_m[static_cast<std::size_t>(k)] += matched_truth.count(o.id) ? 1 : 0;
+    }
+    for (const auto& o : objs) {
+      if (!o.on_floor && !op.include_hanging) continue;
+      const int k = eval_rooms_truth_at(truth, eval_rooms_centroid(o.footprint));
+      if (k < 0) {
+        ++outside;
+        continue;
+      }
+      ++r_n[static_cast<std::size_t>(k)];
+      r_m[static_cast<std::size_t>(k)] += matched_result.count(o.id) ? 1 : 0;
+    }
+    for (std::size_t k = 0; k < nt; ++k)
+      per_room.push_back({{"truth_room", truth.rooms[k].name},
+                          {"truth_objects", t_n[k]},
+                          {"truth_matched", t_m[k]},
+                          {"result_objects", r_n[k]},
+                          {"result_matched", r_m[k]}});
+  }
+  return per_room;
+}
+
 }  // namespace
 
 ordered_json evaluate_rooms_block(const formats::TruthFile& truth, const fs::path& dir,
@@ -109,41 +149,8 @@ ordered_json evaluate_rooms_block(const formats::TruthFile& truth, const fs::pat
          {"found", ok},
          {"distance_m", res.doors.empty() ? ordered_json(nullptr) : ordered_json(nearest)}});
   }
-  // Objects per truth room: truth items (of at least min_truth_area_m2) and their matches, and
-  // the result objects whose footprint centre lies in the room.
-  ordered_json per_room = ordered_json::array();
   int outside = 0;  // result objects whose centre lies in no truth room (in a wall, or outside)
-  if (fs::exists(dir / "objects.json")) {
-    const auto objs = formats::read_objects_json(dir / "objects.json");
-    const sim::ObjectScores s = sim::evaluate_objects(truth.furniture, objs, op);
-    std::map<std::string, bool> matched_truth, matched_result;
-    for (const auto& m : s.matches) matched_truth[m.truth_id] = matched_result[m.result_id] = true;
-    std::vector<int> t_n(nt, 0), t_m(nt, 0), r_n(nt, 0), r_m(nt, 0);
-    for (const auto& o : truth.furniture) {
-      if (!o.on_floor && !op.include_hanging) continue;
-      if (std::abs(signed_area(o.footprint)) < op.min_truth_area_m2) continue;
-      const int k = eval_rooms_truth_at(truth, eval_rooms_centroid(o.footprint));
-      if (k < 0) continue;
-      ++t_n[static_cast<std::size_t>(k)];
-      t_m[static_cast<std::size_t>(k)] += matched_truth.count(o.id) ? 1 : 0;
-    }
-    for (const auto& o : objs) {
-      if (!o.on_floor && !op.include_hanging) continue;
-      const int k = eval_rooms_truth_at(truth, eval_rooms_centroid(o.footprint));
-      if (k < 0) {
-        ++outside;
-        continue;
-      }
-      ++r_n[static_cast<std::size_t>(k)];
-      r_m[static_cast<std::size_t>(k)] += matched_result.count(o.id) ? 1 : 0;
-    }
-    for (std::size_t k = 0; k < nt; ++k)
-      per_room.push_back({{"truth_room", truth.rooms[k].name},
-                          {"truth_objects", t_n[k]},
-                          {"truth_matched", t_m[k]},
-                          {"result_objects", r_n[k]},
-                          {"result_matched", r_m[k]}});
-  }
+  const ordered_json per_room = eval_rooms_objects(truth, dir, op, outside);
   const auto share = [](int a, std::size_t b) {
     return b ? ordered_json(static_cast<double>(a) / static_cast<double>(b))
              : ordered_json(nullptr);
@@ -166,6 +173,7 @@ ordered_json evaluate_rooms_block(const formats::TruthFile& truth, const fs::pat
       {"result_doors", res.doors.size()},
       {"rooms", list},
       {"doors", doors},
+      {"objects_outside_rooms", outside},
       {"objects_per_room", per_room}};
 }
 
