@@ -9,7 +9,10 @@
 # A mode whose pcd-to-map option is missing in this build is reported as "n/a". Prints one row
 # per storey: doors open (share), scanners reachable (components holding scanners; 1 = all
 # reachable), free-space IoU over the seen cells and over all truth-free cells (map.pgm).
-# docs/evaluation.md ("Floors") holds the figures. Simulations are kept in OUT and reused by a
+# Each row is followed by the rooms of that storey (map-eval's "rooms" block; issue 16): truth
+# rooms (corridor included), found / missed / split / merged, rooms within 0.15 m Hausdorff and
+# 3 % area, doors found, objects (>= 0.1 m2) recall / precision and objects in no truth room.
+# docs/evaluation.md ("Floors", "Rooms of a floor") holds the figures. Simulations are kept in OUT and reused by a
 # later run (delete OUT after changing STEP_DEG or scene-sim).
 #
 # Usage: scripts/floor_eval.sh [BUILD_DIR]   (default build/)
@@ -61,6 +64,26 @@ for k, s in parts:
 PY
 }
 
+# The rooms line of each storey of eval.json.
+room_rows() {
+  python3 - "$1" <<'PY'
+import json, sys
+e = json.load(open(sys.argv[1]))
+parts = ([("-", e)] + [(s["k"], s) for s in e["storeys"]]) if e.get("storeys") else [(0, e)]
+for k, s in parts:
+    r, o = s.get("rooms", {}), s.get("objects", {})
+    if r.get("status") != "ok":
+        print("    rooms st %s: %s" % (k, r.get("status", "-")))
+        continue
+    print("    rooms st %s: truth %d found %d missed %d split %d merged %d within %d/%d "
+          "doors %d/%d objects recall %.3f precision %.3f (%d), outside rooms %d" % (
+          k, r["truth_rooms"], r["found"], r["missed"], r["split"], r["merged"],
+          r["within_tolerance"], r["truth_rooms"], r["doors_found"], r["truth_doors"],
+          o.get("recall") or 0, o.get("precision") or 0, o.get("result_count") or 0,
+          r.get("objects_outside_rooms", 0)))
+PY
+}
+
 printf "%-28s %2s %8s %6s %10s %8s %8s %9s\n" case st doors_op doors scan_comps seen_iou all_iou floor_err
 seed_of() { echo $((100 + $1 * 10 + $2)); }
 for rooms in ${ROOMS:-4 8 12}; do
@@ -96,6 +119,7 @@ for rooms in ${ROOMS:-4 8 12}; do
       fi
       "$bin/map-eval" --truth "$sim/ground_truth.json" --result "$res" -o "$res/eval" 2>/dev/null || true
       rows "$res/eval/eval.json" "r${rooms}_s${storeys}_$mode (seed $seed)"
+      room_rows "$res/eval/eval.json"
     done
   done
 done

@@ -2,6 +2,7 @@
 
 #include "indoormap/cloud_io/write.hpp"
 #include "indoormap/draw/objects_png.hpp"
+#include "indoormap/formats/json.hpp"
 #include "indoormap/formats/objects_json.hpp"
 
 namespace indoormap::app {
@@ -28,7 +29,14 @@ std::vector<std::string> write_object_outputs(const fs::path& out, const layout:
       written.push_back(name);
     }
   }
-  formats::write_objects_json(out / "objects.json", res, map.geometry, crops);
+  if (what.room_ids && what.room_ids->size() == res.objects.size()) {
+    nlohmann::json j = formats::objects_json(res, map.geometry, crops);
+    for (std::size_t k = 0; k < res.objects.size(); ++k)
+      j["objects"][k]["room_id"] = (*what.room_ids)[k];
+    formats::write_json(out / "objects.json", j);
+  } else {
+    formats::write_objects_json(out / "objects.json", res, map.geometry, crops);
+  }
   written.push_back("objects.json");
   if (what.csv) {
     formats::write_objects_csv(out / "objects.csv", res);

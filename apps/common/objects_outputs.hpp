@@ -19,6 +19,9 @@ struct ObjectOutputs {
   /// object's crop is written to objects/object_<id>.pcd.
   const std::vector<Eigen::Vector3f>* input_points = nullptr;
   double crop_margin_m = 0.05;
+  /// When set (one per object, in the order of objects.objects): each object's "room_id" in
+  /// objects.json (0: in no room; docs/pcd-to-map.md, "Rooms").
+  const std::vector<int>* room_ids = nullptr;
 };
 
 /// Writes the chosen outputs into out (atomically, each; objects.json and objects.csv by

@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "eval_rooms.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/formats/objects_json.hpp"
 #include "indoormap/formats/pgm.hpp"
@@ -243,6 +244,8 @@ PairReport evaluate_pair(const formats::TruthFile& truth, const fs::path& dir,
     report["room"] = {{"status", "missing"}, {"file", "room.geojson"}};
     out.missing.push_back("room.geojson");
   }
+  // The rooms of the floor (rooms.geojson; "missing" status, not in "missing": older runs).
+  report["rooms"] = evaluate_rooms_block(truth, dir, p.eval);
   // The navigation map.
   const auto map_image = [&] {
     const fs::path img = app::read_map_yaml(dir / "map.yaml").image;

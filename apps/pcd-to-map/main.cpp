@@ -14,6 +14,7 @@
 #include "objects_outputs.hpp"
 #include "output_set.hpp"
 #include "pipeline_run.hpp"
+#include "rooms_outputs.hpp"
 #include "route_outputs.hpp"
 
 namespace fs = std::filesystem;
@@ -27,6 +28,7 @@ struct StoreyWork {
   layout::MapResult map;
   objects::ObjectsResult objs;
   border::BorderResult border;
+  app::StoreyRooms rooms;
   std::size_t furniture_count = 0;
   double objects_ms = 0.0, border_ms = 0.0;
 };
@@ -35,7 +37,8 @@ int run(int argc, char** argv) {
   CLI::App cli_app{
       "pcd-to-map: turn indoor lidar scans into a levelled room layout and a ROS navigation map.\n"
       "Outputs map.pgm + map.yaml + map.png (the navigation map), layout.pgm, layout.png,\n"
-      "objects.json and summary.json (several storeys: each in storey_<k>/).\n"};
+      "objects.json, rooms.geojson + rooms.json + rooms.png and summary.json (several storeys:\n"
+      "each in storey_<k>/).\n"};
   cli_app.footer(
       "Examples:\n"
       "  pcd-to-map clouds/office/cloud.pcd -o out\n"
@@ -67,9 +70,11 @@ int run(int argc, char** argv) {
     w.index = run.mapped[i];
     w.map = i == 0 ? std::move(run.map) : std::move(run.more_maps[i - 1]);
     w.objs = app::timed_objects(w.map, cfg.objects, &w.objects_ms);
+    w.rooms = app::find_storey_rooms(w.map, w.objs);  // drops the inner walls from the objects
     w.border = app::timed_border(w.map, cfg.border, &w.border_ms);
     w.furniture_count = w.objs.objects.size();
     app::add_border_objects(w.objs, w.border);
+    app::assign_rooms(w.rooms, w.objs);
     work.push_back(std::move(w));
   }
 
@@ -87,9 +92,12 @@ int run(int argc, char** argv) {
     std::vector<std::string> outputs = app::write_map_outputs(dir, run);
     app::ObjectOutputs what;
     what.csv = what.picture = false;
+    what.room_ids = &w.rooms.object_rooms;
     for (auto& f : app::write_object_outputs(dir, m, w.objs, what)) outputs.push_back(f);
     json border_block = app::write_border_outputs(dir, m, w.border, w.border_ms);
     for (const auto& f : border_block["outputs"]) outputs.push_back(f.get<std::string>());
+    json rooms_block = app::write_rooms_outputs(dir, m, w.objs, w.rooms);
+    for (const auto& f : rooms_block["outputs"]) outputs.push_back(f.get<std::string>());
     route = app::write_route_outputs(dir, setup->cli, cfg, m.layout.layout,
                                      m.geometry);  // --start/--goal
     if (route)
@@ -97,6 +105,7 @@ int run(int argc, char** argv) {
         outputs.push_back(f.get<std::string>());
     json summary = app::summary_json("pcd-to-map", run, cfg);
     summary["border"] = border_block;
+    summary["rooms"] = rooms_block;
     summary["route"] = route ? route->summary : json(nullptr);
     summary["objects"] = {{"count", w.objs.objects.size()},
                           {"from_border", w.objs.objects.size() - w.furniture_count},

@@ -1,0 +1,59 @@
+#include "rooms_outputs.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include "indoormap/draw/rooms_png.hpp"
+#include "indoormap/formats/json.hpp"
+#include "indoormap/formats/rooms_json.hpp"
+#include "indoormap/rooms/room_objects.hpp"
+
+namespace indoormap::app {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+StoreyRooms find_storey_rooms(const layout::MapResult& m, objects::ObjectsResult& objs,
+                              const rooms::RoomsParams& params) {
+  const auto t0 = std::chrono::steady_clock::now();
+  StoreyRooms r;
+  r.rooms = rooms::find_rooms(m.nav.map, m.geometry, params);
+  r.inner_walls = rooms::inner_wall_objects(objs, m.geometry, r.rooms, params);
+  // The polygons reach the walls of M_r (behind furniture too), never into an inner-wall strip.
+  Grid<std::uint8_t> blocked(objs.labels.width, objs.labels.height, 0);
+  for (std::size_t i = 0; i < objs.labels.data.size(); ++i)
+    blocked.data[i] = std::find(r.inner_walls.begin(), r.inner_walls.end(), objs.labels.data[i]) !=
+                      r.inner_walls.end();
+  rooms::fill_rooms(r.rooms, m.layout.layout, blocked);
+  rooms::remove_objects(objs, r.inner_walls);
+  r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+void assign_rooms(StoreyRooms& r, const objects::ObjectsResult& objs) {
+  r.object_rooms = rooms::object_rooms(objs, r.rooms);
+}
+
+json write_rooms_outputs(const fs::path& out, const layout::MapResult& m,
+                         const objects::ObjectsResult& objs, const StoreyRooms& r) {
+  std::vector<int> ids;
+  std::vector<Polygon> footprints;
+  for (const auto& o : objs.objects) {
+    ids.push_back(o.id);
+    footprints.push_back(o.footprint_m);
+  }
+  formats::write_rooms_geojson(out / "rooms.geojson", r.rooms);
+  formats::write_json(out / "rooms.json", formats::rooms_graph_json(r.rooms, ids, r.object_rooms));
+  draw::write_rooms_png(out / "rooms.png", r.rooms, m.nav.map, footprints,
+                        "rooms of the navigation map");
+  double area = 0.0;
+  for (const auto& room : r.rooms.rooms) area += room.area_m2;
+  return {{"count", r.rooms.rooms.size()},
+          {"doors", r.rooms.doors.size()},
+          {"area_m2", area},
+          {"inner_walls_dropped", r.inner_walls},
+          {"time_ms", r.ms},
+          {"outputs", {"rooms.geojson", "rooms.json", "rooms.png"}}};
+}
+
+}  // namespace indoormap::app

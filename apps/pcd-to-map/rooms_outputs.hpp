@@ -1,0 +1,34 @@
+#pragma once
+// pcd-to-map's rooms of a storey (docs/pcd-to-map.md, "Rooms"): found on the navigation map,
+// the inner walls dropped from the objects, each object's room; rooms.geojson, rooms.json and
+// rooms.png, and the summary's "rooms" block.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "indoormap/layout/pipeline.hpp"
+#include "indoormap/objects/objects.hpp"
+#include "indoormap/rooms/rooms.hpp"
+
+namespace indoormap::app {
+
+struct StoreyRooms {
+  rooms::RoomsResult rooms;
+  std::vector<int> inner_walls;   ///< ids of the objects dropped as inner walls
+  std::vector<int> object_rooms;  ///< per object of the final list (set by assign_rooms)
+  double ms = 0.0;
+};
+
+/// Finds the rooms of the map's navigation map and drops the inner-wall strips from objs.
+StoreyRooms find_storey_rooms(const layout::MapResult& m, objects::ObjectsResult& objs,
+                              const rooms::RoomsParams& params = {});
+
+/// Sets r.object_rooms for the final object list.
+void assign_rooms(StoreyRooms& r, const objects::ObjectsResult& objs);
+
+/// Writes rooms.geojson, rooms.json and rooms.png into out; returns the summary block (with its
+/// "outputs").
+nlohmann::json write_rooms_outputs(const std::filesystem::path& out, const layout::MapResult& m,
+                                   const objects::ObjectsResult& objs, const StoreyRooms& r);
+
+}  // namespace indoormap::app

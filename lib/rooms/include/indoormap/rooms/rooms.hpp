@@ -1,0 +1,84 @@
+#pragma once
+// The rooms of a floor (docs/border-closure.md, "Rooms of a floor"): the free space of a storey's
+// navigation map split into rooms joined by doors (the room segmentation of im_areas,
+// docs/grid-areas.md), each room's closed polygon and the room graph.
+//
+// Polygon: the outer outline of the room's cells, pushed half a cell outwards. A wall face lies,
+// on average, half a cell inside the first occupied cell, so the free cells' edge is half a cell
+// short of it; the outline at half-cell resolution, grown by one half cell, lands on the face.
+// Obstacles inside the room (furniture, unseen spots) are holes and left out: the polygon is the
+// outer ring only.
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "indoormap/areas/params.hpp"
+#include "indoormap/core/cell.hpp"
+#include "indoormap/core/grid.hpp"
+#include "indoormap/core/polygon.hpp"
+
+namespace indoormap::rooms {
+
+struct RoomsParams {
+  /// The segmentation (areas::RoomParams); its defaults are set for a robot of about 0.5 m on
+  /// 5 cm cells, not for any scene: doors are necks of at most 1.5 m.
+  areas::RoomParams segmentation;
+  /// Pieces of free space smaller than this are no room (specks outside windows, under tables).
+  double min_room_area_m2 = 1.5;
+  /// Inner-wall strips among the objects (room_objects.hpp): an object whose oriented box is at
+  /// most this wide ...
+  double inner_wall_max_width_m = 0.45;
+  /// ... with cells of two different rooms within this distance of most of its cells is wall:
+  /// furniture stands in one room, and a wall (0.1 m or more) plus its face cells lie between it
+  /// and the next room.
+  double inner_wall_reach_m = 0.15;
+};
+
+/// Throws UsageError naming the key (rooms.<key>).
+void validate(const RoomsParams& params);
+
+struct Room {
+  int id = 0;  ///< 1-based; the value of its cells in RoomsResult::labels
+  int cells = 0;
+  double area_m2 = 0.0;         ///< of the polygon
+  double perimeter_m = 0.0;     ///< of the polygon
+  Polygon polygon_m;            ///< counter-clockwise, map frame, no closing vertex
+  std::vector<int> neighbours;  ///< rooms it shares a door with, ascending
+};
+
+/// A door: where two rooms' cells touch (4-neighbours); end points of that border, map frame.
+struct RoomDoor {
+  int a = 0, b = 0;  ///< room ids, a < b
+  Eigen::Vector2d end0_m = Eigen::Vector2d::Zero(), end1_m = Eigen::Vector2d::Zero();
+  double width_m = 0.0;  ///< extent of the shared border along its main axis, plus one cell
+  int shared_cells = 0;
+};
+
+struct RoomsResult {
+  GridGeometry geometry;       ///< the navigation map's
+  Grid<std::uint16_t> labels;  ///< room id per cell of the navigation map (0: no room)
+  std::vector<Room> rooms;     ///< rooms[i].id == i + 1
+  std::vector<RoomDoor> doors;
+};
+
+/// Splits the free cells (Cell::kFree) of a navigation map into rooms. No free cell gives no
+/// room (no exception). Throws UsageError for invalid params.
+RoomsResult find_rooms(const Grid<Cell>& nav, const GridGeometry& geometry,
+                       const RoomsParams& params = {});
+
+/// Wall-bounded rooms: each room's cells grown (all rooms at once, 4-neighbours, first come
+/// first served) into the cells that are not free, up to max_fill_m, stopping at the wall cells
+/// of the room layout M_r (its wall band, seen above the furniture), at `blocked` cells (the
+/// inner-wall strips) and at other rooms' cells; the polygons (and areas, perimeters) are
+/// redrawn from the grown cells, so furniture and the unseen floor behind it along a wall no
+/// longer cut notches into them. Labels and doors stay those of the free space. layout and
+/// blocked (non-zero: blocked; may be empty) share the rooms' grid; a layout of another size
+/// leaves the rooms unchanged.
+void fill_rooms(RoomsResult& rooms, const Grid<Cell>& layout, const Grid<std::uint8_t>& blocked,
+                double max_fill_m = 1.0);
+
+/// The id of the room whose polygon holds p (map frame), else of the room with a labelled cell
+/// nearest p within max_m, else 0.
+int room_at(const RoomsResult& rooms, const Eigen::Vector2d& p_m, double max_m = 0.5);
+
+}  // namespace indoormap::rooms

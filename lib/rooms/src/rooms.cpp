@@ -1,0 +1,272 @@
+#include "indoormap/rooms/rooms.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <string>
+#include <utility>
+
+#include "indoormap/areas/rooms.hpp"
+#include "indoormap/core/cell_rings.hpp"
+#include "indoormap/core/errors.hpp"
+
+namespace indoormap::rooms {
+
+namespace {
+
+void rooms_require(bool ok, const std::string& key, const std::string& what) {
+  if (!ok) throw UsageError("invalid parameter rooms." + key + ": " + what);
+}
+
+/// The room's closed polygon: the cells of `id` at half-cell resolution, grown by one half cell
+/// (4-neighbours), traced; the largest outer ring, not simplified: a Douglas-Peucker pass cuts
+/// corners and door notches by a share of a cell along whole walls (1 % of a 6 m2 room's area),
+/// while the staircase of a rotated wall is at most half a cell off its line.
+Polygon rooms_outline(const Grid<std::uint16_t>& labels, const GridGeometry& g, int id, int c0,
+                      int r0, int c1, int r1) {
+  const int w = (c1 - c0 + 3) * 2, h = (r1 - r0 + 3) * 2;  // one cell margin all round
+  std::vector<unsigned char> fine(static_cast<std::size_t>(w) * h, 0);
+  for (int r = r0; r <= r1; ++r)
+    for (int c = c0; c <= c1; ++c) {
+      if (labels.at(c, r) != id) continue;
+      const int fc = (c - c0 + 1) * 2, fr = (r - r0 + 1) * 2;
+      for (int dr = -1; dr <= 2; ++dr)
+        for (int dc = -1; dc <= 2; ++dc) {
+          const bool corner = (dr == -1 || dr == 2) && (dc == -1 || dc == 2);
+          if (!corner) fine[static_cast<std::size_t>(fr + dr) * w + fc + dc] = 1;
+        }
+    }
+  const CellRings rings = trace_mask_rings(fine, 0, 0, w, h);
+  const CellRing* best = nullptr;
+  double best_area = 0.0;
+  for (const auto& ring : rings.outer) {
+    const double a = std::abs(signed_area(ring));
+    if (a > best_area) best_area = a, best = &ring;
+  }
+  if (!best) return {};
+  Polygon poly;
+  poly.reserve(best->size());
+  for (const auto& v : *best)  // fine cell coords -> grid cell coords -> map frame
+    poly.push_back(g.from_cell_coords(v / 2.0 + Eigen::Vector2d(c0 - 1, r0 - 1)));
+  return poly;
+}
+
+/// Doors: the 4-neighbour pairs of cells of two rooms, per pair of rooms; end points are the
+/// extremes along the border's main axis.
+std::vector<RoomDoor> rooms_doors(const Grid<std::uint16_t>& labels, const GridGeometry& g) {
+  std::map<std::pair<int, int>, std::vector<Eigen::Vector2d>> borders;
+  for (int r = 0; r < labels.height; ++r)
+    for (int c = 0; c < labels.width; ++c) {
+      const int a = labels.at(c, r);
+      if (a == 0) continue;
+      for (const auto& [dc, dr] : {std::pair{1, 0}, std::pair{0, 1}}) {
+        if (!labels.contains(c + dc, r + dr)) continue;
+        const int b = labels.at(c + dc, r + dr);
+        if (b == 0 || b == a) continue;
+        const Eigen::Vector2d mid = 0.5 * (g.center_of({c, r}) + g.center_of({c + dc, r + dr}));
+        borders[{std::min(a, b), std::max(a, b)}].push_back(mid);
+      }
+    }
+  std::vector<RoomDoor> doors;
+  for (const auto& [ab, pts] : borders) {
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+    for (const auto& p : pts) mean += p;
+    mean /= static_cast<double>(pts.size());
+    Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+    for (const auto& p : pts) cov += (p - mean) * (p - mean).transpose();
+    Eigen::Vector2d axis(1.0, 0.0);
+    if (pts.size() > 1) {
+      const double angle = 0.5 * std::atan2(2.0 * cov(0, 1), cov(0, 0) - cov(1, 1));
+      axis = {std::cos(angle), std::sin(angle)};
+    }
+    double lo = 0.0, hi = 0.0;
+    for (const auto& p : pts) {
+      const double t = (p - mean).dot(axis);
+      lo = std::min(lo, t), hi = std::max(hi, t);
+    }
+    RoomDoor d;
+    d.a = ab.first, d.b = ab.second;
+    d.end0_m = mean + (lo - 0.5 * g.cell_m()) * axis;
+    d.end1_m = mean + (hi + 0.5 * g.cell_m()) * axis;
+    d.width_m = hi - lo + g.cell_m();
+    d.shared_cells = static_cast<int>(pts.size());
+    doors.push_back(d);
+  }
+  return doors;
+}
+
+/// Every room's polygon, area and perimeter from the cells of `cells` holding its id.
+void rooms_draw_polygons(RoomsResult& out, const Grid<std::uint16_t>& cells) {
+  const int n = static_cast<int>(out.rooms.size());
+  std::vector<std::array<int, 4>> box(static_cast<std::size_t>(n) + 1, {1 << 30, 1 << 30, -1, -1});
+  for (int r = 0; r < cells.height; ++r)
+    for (int c = 0; c < cells.width; ++c) {
+      const int l = cells.at(c, r);
+      if (l <= 0 || l > n) continue;
+      auto& b = box[static_cast<std::size_t>(l)];
+      b = {std::min(b[0], c), std::min(b[1], r), std::max(b[2], c), std::max(b[3], r)};
+    }
+  for (auto& room : out.rooms) {
+    const auto& b = box[static_cast<std::size_t>(room.id)];
+    if (b[2] < 0) continue;
+    room.polygon_m = rooms_outline(cells, out.geometry, room.id, b[0], b[1], b[2], b[3]);
+    room.area_m2 = std::abs(signed_area(room.polygon_m));
+    room.perimeter_m = perimeter(room.polygon_m);
+  }
+}
+
+/// Door passages: room cells within 0.4 m of a door's line (across it) and within its span
+/// (plus two cells) that have cells outside every room on both sides along the door's axis,
+/// within the half width plus two cells. Inside a room, beside the wall face, the way along the
+/// wall is open; in the passage through the wall it is not.
+void rooms_cut_passages(const RoomsResult& out, Grid<std::uint16_t>& grown) {
+  const GridGeometry& g = out.geometry;
+  const Grid<std::uint16_t>& labels = out.labels;
+  const double cell = g.cell_m();
+  for (const auto& d : out.doors) {
+    const Eigen::Vector2d m = 0.5 * (d.end0_m + d.end1_m);
+    const double len = (d.end1_m - d.end0_m).norm();
+    if (len <= 0.0) continue;
+    const Eigen::Vector2d u = (d.end1_m - d.end0_m) / len, n(-u.y(), u.x());
+    const double half = 0.5 * len + 2.0 * cell, depth = 0.4;
+    const auto closed_at = [&](Eigen::Vector2d p, const Eigen::Vector2d& dir) {
+      for (double t = 0.0; t <= half + cell; t += 0.5 * cell) {
+        const CellIndex q = g.cell_of(p + t * dir);
+        if (!labels.contains(q.col, q.row) || labels.at(q) == 0) return true;
+      }
+      return false;
+    };
+    const CellIndex lo = g.cell_of(m - Eigen::Vector2d::Constant(half + depth));
+    const CellIndex hi = g.cell_of(m + Eigen::Vector2d::Constant(half + depth));
+    for (int r = std::max(lo.row, 0); r <= std::min(hi.row, labels.height - 1); ++r)
+      for (int c = std::max(lo.col, 0); c <= std::min(hi.col, labels.width - 1); ++c) {
+        const int id = labels.at(c, r);
+        if (id != d.a && id != d.b) continue;
+        const Eigen::Vector2d p = g.center_of({c, r});
+        if (std::abs((p - m).dot(n)) > depth || std::abs((p - m).dot(u)) > half) continue;
+        if (closed_at(p, u) && closed_at(p, -u)) grown.at(c, r) = 0;
+      }
+  }
+}
+
+}  // namespace
+
+void fill_rooms(RoomsResult& out, const Grid<Cell>& layout, const Grid<std::uint8_t>& blocked,
+                double max_fill_m) {
+  const Grid<std::uint16_t>& labels = out.labels;
+  if (layout.width != labels.width || layout.height != labels.height || out.rooms.empty()) return;
+  const bool has_blocked = blocked.width == labels.width && blocked.height == labels.height;
+  const auto stops = [&](int c, int r) {
+    const Cell l = layout.at(c, r);
+    return l == Cell::kWall || l == Cell::kUnknown || (has_blocked && blocked.at(c, r));
+  };
+  // A door's passage through the wall is free, but M_r has the lintel's wall or strip there:
+  // those cells leave the room's polygon (which ends at the wall's face).
+  Grid<std::uint16_t> grown = labels;
+  Grid<int> steps(labels.width, labels.height, 0);
+  std::vector<CellIndex> queue;
+  rooms_cut_passages(out, grown);
+  for (int r = 0; r < labels.height; ++r)
+    for (int c = 0; c < labels.width; ++c) {
+      if (!grown.at(c, r)) continue;
+      const Cell l = layout.at(c, r);
+      if (l == Cell::kWall || (has_blocked && blocked.at(c, r)))
+        grown.at(c, r) = 0;
+      else
+        queue.push_back({c, r});
+    }
+  const int max_steps = static_cast<int>(std::lround(max_fill_m / out.geometry.cell_m()));
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const CellIndex at = queue[head];
+    if (steps.at(at) >= max_steps) continue;
+    for (const auto& [dc, dr] :
+         {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+      const int c = at.col + dc, r = at.row + dr;
+      if (!grown.contains(c, r) || grown.at(c, r) != 0 || labels.at(c, r) != 0 || stops(c, r))
+        continue;
+      grown.at(c, r) = grown.at(at);
+      steps.at(c, r) = steps.at(at) + 1;
+      queue.push_back({c, r});
+    }
+  }
+  rooms_draw_polygons(out, grown);
+}
+
+void validate(const RoomsParams& p) {
+  areas::validate(p.segmentation);
+  rooms_require(p.min_room_area_m2 >= 0.0, "min_room_area_m2", "must be >= 0");
+  rooms_require(p.inner_wall_max_width_m >= 0.0, "inner_wall_max_width_m", "must be >= 0");
+  rooms_require(p.inner_wall_reach_m >= 0.0 && p.inner_wall_reach_m <= 1.0, "inner_wall_reach_m",
+                "must be in [0, 1]");
+}
+
+RoomsResult find_rooms(const Grid<Cell>& nav, const GridGeometry& g, const RoomsParams& p) {
+  validate(p);
+  RoomsResult out;
+  out.geometry = g;
+  out.labels = Grid<std::uint16_t>(nav.width, nav.height, 0);
+  Grid<std::uint8_t> free(nav.width, nav.height, 0);
+  bool any = false;
+  for (std::size_t i = 0; i < nav.data.size(); ++i)
+    if (nav.data[i] == Cell::kFree) free.data[i] = 1, any = true;
+  if (!any) return out;
+  int count = 0;
+  const Grid<int> seg = areas::segment_rooms(free, g.cell_m(), p.segmentation, &count);
+  // Pieces, their cell counts and boxes; small ones are no room; ids renumbered 1.. in order.
+  struct Box {
+    int cells = 0, c0 = 1 << 30, r0 = 1 << 30, c1 = -1, r1 = -1;
+  };
+  std::vector<Box> boxes(static_cast<std::size_t>(count) + 1);
+  for (int r = 0; r < seg.height; ++r)
+    for (int c = 0; c < seg.width; ++c) {
+      const int l = seg.at(c, r);
+      if (l <= 0 || l > count) continue;
+      Box& b = boxes[static_cast<std::size_t>(l)];
+      ++b.cells, b.c0 = std::min(b.c0, c), b.r0 = std::min(b.r0, r);
+      b.c1 = std::max(b.c1, c), b.r1 = std::max(b.r1, r);
+    }
+  const double cell_area = g.cell_m() * g.cell_m();
+  std::vector<int> new_id(boxes.size(), 0);
+  int n = 0;
+  for (std::size_t l = 1; l < boxes.size(); ++l)
+    if (boxes[l].cells > 0 && boxes[l].cells * cell_area >= p.min_room_area_m2) new_id[l] = ++n;
+  for (std::size_t i = 0; i < seg.data.size(); ++i) {
+    const int l = seg.data[i];
+    if (l > 0 && l <= count) out.labels.data[i] = static_cast<std::uint16_t>(new_id[l]);
+  }
+  for (std::size_t l = 1; l < boxes.size(); ++l) {
+    if (new_id[l] == 0) continue;
+    Room room;
+    room.id = new_id[l];
+    room.cells = boxes[l].cells;
+    out.rooms.push_back(std::move(room));
+  }
+  rooms_draw_polygons(out, out.labels);
+  out.doors = rooms_doors(out.labels, g);
+  for (const auto& d : out.doors) {
+    out.rooms[static_cast<std::size_t>(d.a - 1)].neighbours.push_back(d.b);
+    out.rooms[static_cast<std::size_t>(d.b - 1)].neighbours.push_back(d.a);
+  }
+  for (auto& r : out.rooms) std::sort(r.neighbours.begin(), r.neighbours.end());
+  return out;
+}
+
+int room_at(const RoomsResult& rooms, const Eigen::Vector2d& p, double max_m) {
+  for (const auto& r : rooms.rooms)
+    if (contains(r.polygon_m, p)) return r.id;
+  const GridGeometry& g = rooms.geometry;
+  const CellIndex at = g.cell_of(p);
+  const int reach = static_cast<int>(std::ceil(max_m / g.cell_m()));
+  int best = 0;
+  double best_d2 = max_m * max_m;
+  for (int r = at.row - reach; r <= at.row + reach; ++r)
+    for (int c = at.col - reach; c <= at.col + reach; ++c) {
+      if (!rooms.labels.contains(c, r) || rooms.labels.at(c, r) == 0) continue;
+      const double d2 = (g.center_of({c, r}) - p).squaredNorm();
+      if (d2 <= best_d2) best_d2 = d2, best = rooms.labels.at(c, r);
+    }
+  return best;
+}
+
+}  // namespace indoormap::rooms

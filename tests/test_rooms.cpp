@@ -1,0 +1,152 @@
+// lib/rooms: rooms of a navigation map, their polygons and doors, the inner-wall rule and each
+// object's room; rooms.geojson / rooms.json of lib/formats. Hand-made grids of 5 cm cells.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "indoormap/core/errors.hpp"
+#include "indoormap/formats/rooms_json.hpp"
+#include "indoormap/rooms/room_objects.hpp"
+#include "indoormap/rooms/rooms.hpp"
+#include "test_support.hpp"
+
+using namespace indoormap;
+
+namespace {
+
+constexpr double kCell = 0.05;
+
+// Two rooms 3 m x 2 m (60 x 40 cells) side by side along x, a 0.2 m wall (4 cells) between them
+// with a 0.8 m door (16 cells) in its middle, and a one-cell wall all round. Cell (0, 0) has its
+// lower-left corner at the map origin.
+struct TwoRooms {
+  Grid<Cell> nav{1 + 60 + 4 + 60 + 1, 1 + 40 + 1, Cell::kWall};
+  GridGeometry geometry{{0.0, 0.0}, kCell, 126, 42};
+  TwoRooms() {
+    for (int r = 1; r <= 40; ++r) {
+      for (int c = 1; c <= 60; ++c) nav.at(c, r) = Cell::kFree;
+      for (int c = 65; c <= 124; ++c) nav.at(c, r) = Cell::kFree;
+    }
+    for (int r = 13; r < 29; ++r)  // the door
+      for (int c = 61; c <= 64; ++c) nav.at(c, r) = Cell::kFree;
+  }
+};
+
+}  // namespace
+
+TEST(Rooms, TwoRoomsJoinedByOneDoor) {
+  const TwoRooms t;
+  const rooms::RoomsResult r = rooms::find_rooms(t.nav, t.geometry);
+  ASSERT_EQ(r.rooms.size(), 2u);
+  ASSERT_EQ(r.doors.size(), 1u);
+  const auto& d = r.doors[0];
+  EXPECT_EQ(d.a, 1);
+  EXPECT_EQ(d.b, 2);
+  EXPECT_NEAR(d.width_m, 0.8, 1e-9);  // the door's 16 cells across
+  // The door lies in the wall between x = 3.05 and 3.25 m, spanning y = 0.65 .. 1.45 m.
+  const Eigen::Vector2d mid = 0.5 * (d.end0_m + d.end1_m);
+  EXPECT_GT(mid.x(), 3.05);
+  EXPECT_LT(mid.x(), 3.25);
+  EXPECT_NEAR(mid.y(), 1.05, 1e-9);
+  for (const auto& room : r.rooms) {
+    // The free cells (6 m2, plus up to the door's cells) grown half a cell all round: the
+    // rectangle 3.05 x 2.05 m = 6.2525 m2, with at most the door passage (0.16 m2) on top; the
+    // simplification (half a cell) may cut corners by a little.
+    EXPECT_GT(room.area_m2, 6.25 * 0.99) << room.id;
+    EXPECT_LT(room.area_m2, 6.25 + 0.17) << room.id;
+    EXPECT_NEAR(room.perimeter_m, 2 * (3.05 + 2.05), 0.5) << room.id;
+    EXPECT_EQ(room.neighbours, std::vector<int>{room.id == 1 ? 2 : 1});
+  }
+  // Room 1 is the left one; its polygon holds its centre, not the other's.
+  EXPECT_EQ(rooms::room_at(r, {1.5, 1.0}), 1);
+  EXPECT_EQ(rooms::room_at(r, {4.8, 1.0}), 2);
+  EXPECT_EQ(rooms::room_at(r, {10.0, 10.0}), 0);
+}
+
+TEST(Rooms, OneRoomWithoutDoorsAndAnEmptyMap) {
+  TwoRooms t;
+  for (int r = 13; r < 29; ++r)  // wall the door up
+    for (int c = 61; c <= 64; ++c) t.nav.at(c, r) = Cell::kWall;
+  const auto r = rooms::find_rooms(t.nav, t.geometry);
+  EXPECT_EQ(r.rooms.size(), 2u);
+  EXPECT_TRUE(r.doors.empty());
+  const Grid<Cell> none(10, 10, Cell::kUnknown);
+  const auto e = rooms::find_rooms(none, GridGeometry({0, 0}, kCell, 10, 10));
+  EXPECT_TRUE(e.rooms.empty());
+  EXPECT_TRUE(e.doors.empty());
+}
+
+TEST(Rooms, InvalidParametersNameTheKey) {
+  rooms::RoomsParams p;
+  p.inner_wall_reach_m = -1.0;
+  try {
+    rooms::validate(p);
+    FAIL() << "no exception";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("rooms.inner_wall_reach_m"), std::string::npos);
+  }
+}
+
+TEST(Rooms, InnerWallStripIsDroppedFurnitureStays) {
+  const TwoRooms t;
+  const auto r = rooms::find_rooms(t.nav, t.geometry);
+  objects::ObjectsResult objs;
+  objs.labels = Grid<std::int32_t>(t.nav.width, t.nav.height, 0);
+  // 1: the wall strip below the door (columns 61-64, rows 1-12), 0.2 m x 0.6 m.
+  objects::FurnitureObject wall;
+  wall.id = 1;
+  wall.box.width_m = 0.2;
+  wall.box.length_m = 0.6;
+  wall.box.center_m = {3.15, 0.35};
+  for (int row = 1; row <= 12; ++row)
+    for (int c = 61; c <= 64; ++c) objs.labels.at(c, row) = 1;
+  // 2: a cabinet 0.4 x 0.6 m against the wall in room 2 (columns 65-72, rows 30-40).
+  objects::FurnitureObject cabinet;
+  cabinet.id = 2;
+  cabinet.box.width_m = 0.4;
+  cabinet.box.length_m = 0.55;
+  cabinet.box.center_m = {3.45, 1.78};
+  for (int row = 30; row <= 40; ++row)
+    for (int c = 65; c <= 72; ++c) objs.labels.at(c, row) = 2;
+  objs.objects = {wall, cabinet};
+  const std::vector<int> ids = rooms::inner_wall_objects(objs, t.geometry, r);
+  EXPECT_EQ(ids, std::vector<int>{1});
+  EXPECT_EQ(rooms::remove_objects(objs, ids), 1);
+  ASSERT_EQ(objs.objects.size(), 1u);
+  EXPECT_EQ(objs.objects[0].id, 2);
+  EXPECT_EQ(objs.labels.at(62, 5), 0);
+  EXPECT_EQ(objs.labels.at(66, 35), 2);
+  EXPECT_EQ(rooms::object_rooms(objs, r), std::vector<int>{2});
+}
+
+TEST(RoomsFormats, GeojsonRoundTripAndGraph) {
+  const TwoRooms t;
+  const auto r = rooms::find_rooms(t.nav, t.geometry);
+  const auto dir = test::scratch_dir();
+  formats::write_rooms_geojson(dir / "rooms.geojson", r);
+  const formats::RoomsFile f = formats::read_rooms_geojson(dir / "rooms.geojson");
+  ASSERT_EQ(f.rooms.size(), 2u);
+  ASSERT_EQ(f.doors.size(), 1u);
+  EXPECT_EQ(f.rooms[1].id, 2);
+  EXPECT_EQ(f.rooms[0].polygon.size(), r.rooms[0].polygon_m.size());
+  EXPECT_EQ(f.doors[0].a, 1);
+  EXPECT_EQ(f.doors[0].b, 2);
+  EXPECT_NEAR(f.doors[0].width_m, (r.doors[0].end1_m - r.doors[0].end0_m).norm(), 1e-9);
+  const auto g = formats::rooms_graph_json(r, {7, 8}, {2, 0});
+  EXPECT_EQ(g["count"], 2);
+  EXPECT_EQ(g["rooms"][1]["objects"], nlohmann::json::array({7}));
+  EXPECT_EQ(g["rooms"][0]["neighbours"], nlohmann::json::array({2}));
+  EXPECT_EQ(g["doors"][0]["rooms"], nlohmann::json::array({1, 2}));
+  // A malformed door names the file and the key.
+  test::write_text(dir / "bad.geojson",
+                   R"({"type": "FeatureCollection", "features": [{"type": "Feature",
+      "geometry": {"type": "LineString", "coordinates": [[0, 0], [1, 0]]},
+      "properties": {"kind": "door", "rooms": [1]}}]})");
+  try {
+    formats::read_rooms_geojson(dir / "bad.geojson");
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("features[0].properties.rooms"), std::string::npos);
+  }
+}

@@ -1,0 +1,140 @@
+// Rooms of a floor (issue 16): pcd-to-map's rooms.geojson / rooms.json / rooms.png and map-eval's
+// "rooms" block on simulated buildings (4 rooms and a corridor, one and two storeys) and on the
+// single-room office, run as a user runs them; map-eval must accept every result pcd-to-map
+// wrote. App-level, over 1 s: labelled slow.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "test_support.hpp"
+
+using indoormap::test::run_app;
+using nlohmann::json;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+json rooms_read_json(const fs::path& p) {
+  std::ifstream in(p);
+  return json::parse(in);
+}
+
+/// scene-sim --random --rooms 4 (seed, storeys) once per process, 0.5 degree steps.
+fs::path rooms_building(int seed, int storeys) {
+  const fs::path d = fs::temp_directory_path() / "indoormap-tests" /
+                     ("rooms_building_" + std::to_string(seed) + "_" + std::to_string(storeys) +
+                      "_" + std::to_string(::getpid()));
+  if (fs::exists(d / "ground_truth.json")) return d;
+  fs::remove_all(d);
+  const auto r = run_app("scene-sim", "--random --rooms 4 --seed " + std::to_string(seed) +
+                                          " --storeys " + std::to_string(storeys) +
+                                          " --step-deg 0.5 --3dtk -q -o " + d.string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return d;
+}
+
+/// pcd-to-map on IN, map-eval on its outputs; returns eval.json.
+json rooms_map_and_eval(const fs::path& in, const fs::path& truth, const fs::path& out) {
+  const auto a = run_app("pcd-to-map", in.string() + " -q -o " + out.string());
+  EXPECT_EQ(a.exit_code, 0) << a.err;
+  const auto e = run_app("map-eval", "--truth " + truth.string() + " --result " + out.string() +
+                                         " -o " + (out / "eval").string());
+  EXPECT_EQ(e.exit_code, 0) << e.err;  // never fails on a result pcd-to-map wrote
+  return rooms_read_json(out / "eval" / "eval.json");
+}
+
+}  // namespace
+
+TEST(RoomsApp, FourRoomsAndACorridorEachItsOwnRoomWithItsDoor) {
+  const fs::path in = rooms_building(141, 1);
+  const fs::path out = indoormap::test::scratch_dir();
+  const json e = rooms_map_and_eval(in / "3dtk", in / "ground_truth.json", out);
+  for (const char* f : {"rooms.geojson", "rooms.json", "rooms.png", "objects.json"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  const json& r = e["rooms"];
+  ASSERT_EQ(r["status"], "ok");
+  EXPECT_EQ(r["truth_rooms"], 5);  // 4 rooms and the corridor
+  EXPECT_EQ(r["result_rooms"], 5);
+  EXPECT_EQ(r["found"], 5);
+  EXPECT_EQ(r["missed"], 0);
+  EXPECT_EQ(r["split"], 0);
+  EXPECT_EQ(r["merged"], 0);
+  EXPECT_EQ(r["doors_found"], 4);
+  // Every object of objects.json has its room; rooms.json lists the room graph: the corridor
+  // joins the four rooms.
+  const json objs = rooms_read_json(out / "objects.json");
+  for (const auto& o : objs["objects"]) EXPECT_TRUE(o.contains("room_id")) << o["id"];
+  const json graph = rooms_read_json(out / "rooms.json");
+  ASSERT_EQ(graph["rooms"].size(), 5u);
+  int hub = 0;
+  for (const auto& room : graph["rooms"]) hub = std::max<int>(hub, room["neighbours"].size());
+  EXPECT_EQ(hub, 4);
+  EXPECT_EQ(graph["doors"].size(), 4u);
+  const json summary = rooms_read_json(out / "summary.json");
+  EXPECT_EQ(summary["rooms"]["count"], 5);
+}
+
+TEST(RoomsApp, TwoStoreysEachWithItsRooms) {
+  const fs::path in = rooms_building(142, 2);
+  const fs::path out = indoormap::test::scratch_dir();
+  const json e = rooms_map_and_eval(in / "3dtk", in / "ground_truth.json", out);
+  ASSERT_TRUE(e.contains("storeys"));
+  ASSERT_EQ(e["storeys"].size(), 2u);
+  for (const auto& s : e["storeys"]) {
+    ASSERT_EQ(s["rooms"]["status"], "ok") << s.dump();
+    EXPECT_EQ(s["rooms"]["truth_rooms"], 5);
+    EXPECT_EQ(s["rooms"]["missed"], 0);
+    EXPECT_EQ(s["rooms"]["merged"], 0);
+    EXPECT_GE(s["rooms"]["found"].get<int>(), 4);
+  }
+  // Storey 0: every door. (Storey 1 at 0.5 degree steps: its navigation map keeps every door
+  // closed - floor.doors.open_share 0 - so its rooms have no doors and one room is split; at
+  // scene-sim's default steps both storeys open every door: docs/evaluation.md.)
+  EXPECT_EQ(e["storeys"][0]["rooms"]["doors_found"], 4);
+  EXPECT_EQ(e["storeys"][0]["rooms"]["found"], 5);
+  for (int k = 0; k < 2; ++k)
+    EXPECT_TRUE(fs::exists(out / ("storey_" + std::to_string(k)) / "rooms.geojson")) << k;
+}
+
+// The office (one room, 51 m2, scanned from inside): the office is one room of rooms.geojson
+// (IoU >= 0.85 with the truth); a separate 3.4 m2 piece of free space with no door to it comes
+// out as a second room (counted "split" by map-eval; docs/evaluation.md says so).
+TEST(RoomsApp, SingleRoomOfficeIsOneRoomPlusAPiece) {
+  const fs::path office = fs::path(INDOORMAP_SOURCE_DIR) / "clouds" / "office";
+  const fs::path out = indoormap::test::scratch_dir();
+  const json e = rooms_map_and_eval(office / "cloud.pcd", office / "ground_truth.json", out);
+  EXPECT_TRUE(fs::exists(out / "room.geojson"));  // today's outputs stay
+  const json& r = e["rooms"];
+  ASSERT_EQ(r["status"], "ok");
+  ASSERT_FALSE(r["rooms"].empty());
+  EXPECT_EQ(r["rooms"][0]["truth_room"], "office");
+  EXPECT_GE(r["rooms"][0]["iou"].get<double>(), 0.85);
+  EXPECT_LE(r["result_rooms"].get<int>(), 2);
+  EXPECT_TRUE(rooms_read_json(out / "rooms.json")["doors"].empty());
+}
+
+// The Jacobs lab (issue 16's target: one room of 28-40 m2 with its door to the corridor): the
+// lab is the room holding the scanner; a door joins it to the room beyond (the corridor's piece).
+TEST(RoomsApp, JacobsLabOneRoomWithItsDoorToTheCorridor) {
+  INDOORMAP_REQUIRE_DATA(data, "jacobs-thermocolorlab");
+  const fs::path out = indoormap::test::scratch_dir();
+  const auto r = run_app("pcd-to-map", data.string() + " -q -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json g = rooms_read_json(out / "rooms.json");
+  int labs = 0, lab = 0;
+  for (const auto& room : g["rooms"])
+    if (room["area_m2"].get<double>() >= 28.0 && room["area_m2"].get<double>() <= 40.0)
+      ++labs, lab = room["id"].get<int>();
+  ASSERT_EQ(labs, 1) << g.dump();
+  int doors = 0;
+  for (const auto& d : g["doors"])
+    if (d["rooms"][0] == lab || d["rooms"][1] == lab) {
+      ++doors;
+      EXPECT_GT(d["width_m"].get<double>(), 0.6);
+      EXPECT_LT(d["width_m"].get<double>(), 1.2);
+    }
+  EXPECT_EQ(doors, 1);
+}
