@@ -57,7 +57,7 @@ struct PlaneFit {
 /// What a levelling plane rests on (level_support).
 struct LevelSupport {
   double plane_area_m2 = 0.0;         ///< 0.25 m cells holding the plane's inliers
-  double cloud_area_m2 = 0.0;         ///< 0.25 m cells holding any point
+  double cloud_area_m2 = 0.0;         ///< 0.25 m cells holding >= 1/20 of the median count
   double plane_surround_share = 0.0;  ///< best over the scanners; 1 without scanners
   double horizon_share = 0.0;         ///< of all points, best over the scanners; 1 without
 };
