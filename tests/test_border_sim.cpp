@@ -233,7 +233,13 @@ TEST(BorderObjects, InteriorComponentsInsideTheRoomJoinTheObjectList) {
   pillar.min_m = {0.9, 2.9};
   pillar.max_m = {1.3, 3.3};
   objs.objects.push_back(pillar);
-  app::add_border_objects(objs, r);
+  {  // nothing below objects.min_area_m2: the 0.2 x 0.2 m installation is too small for 0.05
+    objects::ObjectsResult big_only = objs;
+    app::add_border_objects(big_only, r, 0.05);
+    ASSERT_EQ(big_only.objects.size(), 2u);
+    EXPECT_EQ(big_only.objects[1].kind, ObjectKind::kColumn);
+  }
+  app::add_border_objects(objs, r, objects::ObjectParams{}.min_area_m2);
   ASSERT_EQ(objs.objects.size(), 3u);
   EXPECT_EQ(objs.objects[1].id, 2);
   EXPECT_EQ(objs.objects[1].kind, ObjectKind::kColumn);
@@ -262,6 +268,6 @@ TEST(BorderObjects, InteriorComponentsInsideTheRoomJoinTheObjectList) {
   EXPECT_GT(want.size(), 100u);
   r.closed = false;  // no room polygon: nothing to place them in
   objects::ObjectsResult none;
-  app::add_border_objects(none, r);
+  app::add_border_objects(none, r, 0.0);
   EXPECT_TRUE(none.objects.empty());
 }

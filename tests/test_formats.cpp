@@ -211,6 +211,39 @@ TEST(RoomGeojson, WriteReadRoundTrip) {
   EXPECT_EQ(room["origin_m"], json::array({0.5, 0.5}));
 }
 
+// room.geojson holds the room, its openings and the interior objects inside or on it; a box
+// that crosses the room's edge or lies outside stays in room.json only (issue 17).
+TEST(RoomGeojson, InteriorObjectsOnlyInsideOrOnTheRoom) {
+  border::BorderResult r;
+  r.closed = true;
+  r.polygon_m = {{0, 0}, {4, 0}, {4, 3}, {0, 3}};
+  auto box = [](Eigen::Vector2d lo, Eigen::Vector2d hi) {
+    border::InteriorObject o;
+    o.min_m = lo;
+    o.max_m = hi;
+    o.cells = 4;
+    return o;
+  };
+  r.interior_objects = {box({1, 1}, {1.5, 1.5}),    // inside
+                        box({0, 2}, {0.5, 3}),      // on the edge (corner of the room)
+                        box({3.8, 1}, {4.3, 1.4}),  // crosses the edge
+                        box({6, 6}, {7, 7})};       // outside
+  const json fc = formats::room_geojson(r);
+  std::vector<json> objects;
+  for (const auto& f : fc["features"]) {
+    const std::string kind = f["properties"]["kind"];
+    EXPECT_TRUE(kind == "room" || kind == "opening" || kind == "interior_object") << kind;
+    if (kind == "interior_object") objects.push_back(f);
+  }
+  ASSERT_EQ(objects.size(), 2u);
+  EXPECT_EQ(objects[0]["geometry"]["coordinates"][0][0], json::array({1.0, 1.0}));
+  EXPECT_EQ(objects[1]["geometry"]["coordinates"][0][0], json::array({0.0, 2.0}));
+  EXPECT_EQ(formats::room_json(r, GridGeometry({0, 0}, 0.05, 4, 4))["interior_objects"].size(), 4u);
+  r.closed = false;  // no room: no interior object either
+  for (const auto& f : formats::room_geojson(r)["features"])
+    EXPECT_NE(f["properties"]["kind"], "interior_object");
+}
+
 // ------------------------------------------------------------------------------ route
 
 TEST(RouteJson, WriteReadRoundTrip) {

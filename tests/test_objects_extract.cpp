@@ -83,6 +83,7 @@ TEST(Objects, GeometryHeightsAndWallContactOnAHandMadeRoom) {
   const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
   ObjectParams p;
   p.min_area_m2 = 0.0;
+  p.min_seen_area_m2 = 0.0;
   ObjectsResult res = extract_objects(L, geo, g, flat_layers(), p);
   ASSERT_EQ(res.objects.size(), 2u);
   const auto& table = res.objects[0];  // raster order: row 2 comes first
@@ -123,6 +124,7 @@ TEST(Objects, GeometryHeightsAndWallContactOnAHandMadeRoom) {
   ObjectParams p8;
   p8.connectivity = Connectivity::k8;
   p8.min_area_m2 = 0.0;
+  p8.min_seen_area_m2 = 0.0;
   const auto d =
       extract_objects(diag, GridGeometry({0, 0}, 0.05, 6, 6), voxels(6, 6, 30), flat_layers(), p8);
   ASSERT_EQ(d.objects.size(), 1u);
@@ -143,6 +145,7 @@ TEST(Objects, ObjectsHighAboveTheFloorAreHanging) {
   const GridGeometry geo({0, 0}, 0.05, 12, 6);
   ObjectParams p;
   p.min_area_m2 = 0.0;
+  p.min_seen_area_m2 = 0.0;
   auto res = extract_objects(L, geo, g, flat_layers(), p);
   ASSERT_EQ(res.objects.size(), 2u);
   EXPECT_EQ(res.objects[0].kind, ObjectKind::kHanging);
@@ -166,6 +169,7 @@ TEST(Objects, TouchingObjectsOfDifferentHeightsAreSplit) {
   const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
   ObjectParams p;
   p.min_area_m2 = 0.0;
+  p.min_seen_area_m2 = 0.0;
   auto res = extract_objects(L, geo, g, flat_layers(), p);
   ASSERT_EQ(res.objects.size(), 2u);
   EXPECT_NEAR(res.objects[0].z_max_m, 0.725, 1e-9);
@@ -235,6 +239,7 @@ TEST(Objects, PocketsTheScannerSawIntoAreNotPartOfTheObject) {
   const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
   ObjectParams p;
   p.min_area_m2 = 0.0;
+  p.min_seen_area_m2 = 0.0;
   const std::vector<Eigen::Vector3d> scanner{{0.0, 0.4, 1.3}};
   const auto res = extract_objects(L, geo, g, flat_layers(), p, scanner);
   ASSERT_EQ(res.objects.size(), 2u);
@@ -396,6 +401,7 @@ TEST(Objects, CropHoldsExactlyThePointsOfTheRegion) {
     }
   ObjectParams p;
   p.min_area_m2 = 0.0;
+  p.min_seen_area_m2 = 0.0;
   auto res = extract_objects(L, geo, g, flat_layers(), p);
   ASSERT_EQ(res.objects.size(), 1u);
   const auto& o = res.objects[0];

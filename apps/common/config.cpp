@@ -12,17 +12,15 @@ namespace indoormap::app {
 
 namespace {
 
-// Calls f(section, key, field) for every configurable field, in documentation order. One list
-// serves reading, printing and validation, so they cannot drift apart.
+// The level.<key> fields, in documentation order (part of visit).
 template <class F>
-void visit(PipelineConfig& c, F&& f) {
-  f("input", "unit_m", c.load.unit_m);
-  f("input", "up_axis", c.load.up_axis);
-  f("input", "max_points", c.load.max_points);
-  f("input", "scanners", c.scanners);
-  auto& lv = c.map.level;
+void visit_level(cloud::LevelParams& lv, F& f) {
   f("level", "enabled", lv.enabled);
   f("level", "max_tilt_deg", lv.max_tilt_deg);
+  f("level", "min_support_area_m2", lv.min_support_area_m2);
+  f("level", "min_support_surround", lv.min_support_surround);
+  f("level", "warn_horizon_share", lv.warn_horizon_share);
+  f("level", "warn_floor_share", lv.warn_floor_share);
   f("level", "band_m", lv.band_m);
   f("level", "peak_fraction", lv.peak_fraction);
   f("level", "inlier_m", lv.inlier_m);
@@ -32,6 +30,17 @@ void visit(PipelineConfig& c, F&& f) {
   f("level", "min_fill", lv.min_fill);
   f("level", "max_normal_disagreement_deg", lv.max_normal_disagreement_deg);
   f("level", "seed", lv.seed);
+}
+
+// Calls f(section, key, field) for every configurable field, in documentation order. One list
+// serves reading, printing and validation, so they cannot drift apart.
+template <class F>
+void visit(PipelineConfig& c, F&& f) {
+  f("input", "unit_m", c.load.unit_m);
+  f("input", "up_axis", c.load.up_axis);
+  f("input", "max_points", c.load.max_points);
+  f("input", "scanners", c.scanners);
+  visit_level(c.map.level, f);
   auto& vx = c.map.voxel;
   f("voxel", "cell_m", vx.cell_m);
   f("voxel", "max_cells", vx.max_cells);
@@ -74,6 +83,8 @@ void visit(PipelineConfig& c, F&& f) {
   f("layout", "hanging_gap_m", lo.hanging_gap_m);
   auto& ob = c.objects;
   f("objects", "min_area_m2", ob.min_area_m2);
+  f("objects", "join_gap_m", ob.join_gap_m);
+  f("objects", "min_seen_area_m2", ob.min_seen_area_m2);
   f("objects", "connectivity", ob.connectivity);
   f("objects", "crop_margin_m", ob.crop_margin_m);
   f("objects", "split_height_step_m", ob.split_height_step_m);

@@ -49,10 +49,13 @@ std::vector<std::string> write_object_outputs(const fs::path& out, const layout:
   return written;
 }
 
-void add_border_objects(objects::ObjectsResult& objs, const border::BorderResult& r) {
+void add_border_objects(objects::ObjectsResult& objs, const border::BorderResult& r,
+                        double min_area_m2) {
   if (!r.closed) return;
   for (const auto& io : r.interior_objects) {
     const Eigen::Vector2d centre = 0.5 * (io.min_m + io.max_m);
+    const Eigen::Vector2d extent = io.max_m - io.min_m;
+    if (extent.x() * extent.y() < min_area_m2) continue;
     if (!indoormap::contains(r.polygon_m, centre)) continue;
     bool covered = false;
     for (const auto& o : objs.objects)

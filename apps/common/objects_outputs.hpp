@@ -35,7 +35,9 @@ std::vector<std::string> write_object_outputs(const std::filesystem::path& out,
 /// listed object covers (its box's centre lies in none of their boxes) join the object list:
 /// kind "column" for a closed ring (seen all round), "installation" otherwise; footprint = the
 /// box, no heights; own_cells = the box's cells, so a crop holds the box's points at every
-/// height. Nothing is added when the border is not closed.
-void add_border_objects(objects::ObjectsResult& objs, const border::BorderResult& r);
+/// height. Boxes smaller than min_area_m2 (objects.min_area_m2) are not added. Nothing is added
+/// when the border is not closed.
+void add_border_objects(objects::ObjectsResult& objs, const border::BorderResult& r,
+                        double min_area_m2);
 
 }  // namespace indoormap::app

@@ -47,7 +47,7 @@ int run(int argc, char** argv) {
   double border_ms = 0.0;
   const border::BorderResult border_result = app::timed_border(m, cfg.border, &border_ms);
   const std::size_t furniture_count = objs.objects.size();
-  app::add_border_objects(objs, border_result);
+  app::add_border_objects(objs, border_result, cfg.objects.min_area_m2);
 
   const auto t_write = std::chrono::steady_clock::now();
   app::OutputSet set(out, "furniture-extract");  // all or nothing: docs/furniture-extract.md
@@ -61,6 +61,9 @@ int run(int argc, char** argv) {
   json summary = app::summary_json("furniture-extract", run, cfg);
   summary["objects"] = {{"count", objs.objects.size()},
                         {"from_border", objs.objects.size() - furniture_count},
+                        {"left_over_cells", objs.left_over_cells},
+                        {"left_over_area_m2", objs.left_over_area_m2},
+                        {"left_over_pieces", objs.left_over_pieces},
                         {"file", "objects.json"}};
   summary["border"] = {{"closed", border_result.closed}, {"reason", border_result.reason}};
   summary["timings_ms"]["objects"] = objects_ms;

@@ -73,7 +73,7 @@ int run(int argc, char** argv) {
     w.rooms = app::find_storey_rooms(w.map, w.objs);  // drops the inner walls from the objects
     w.border = app::timed_border(w.map, cfg.border, &w.border_ms);
     w.furniture_count = w.objs.objects.size();
-    app::add_border_objects(w.objs, w.border);
+    app::add_border_objects(w.objs, w.border, cfg.objects.min_area_m2);
     app::assign_rooms(w.rooms, w.objs);
     work.push_back(std::move(w));
   }
@@ -109,6 +109,8 @@ int run(int argc, char** argv) {
     summary["route"] = route ? route->summary : json(nullptr);
     summary["objects"] = {{"count", w.objs.objects.size()},
                           {"from_border", w.objs.objects.size() - w.furniture_count},
+                          {"left_over_cells", w.objs.left_over_cells},
+                          {"left_over_area_m2", w.objs.left_over_area_m2},
                           {"file", "objects.json"}};
     summary["timings_ms"]["objects"] = w.objects_ms;
     summary["storeys"] = app::storeys_json(run);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "indoormap/core/errors.hpp"
+#include "level_internal.hpp"
 
 namespace indoormap::cloud {
 
@@ -166,9 +167,17 @@ void validate(const LevelParams& lv) {
   require(lv.sample_points >= 3 && lv.sample_points <= 100'000'000,
           "level.sample_points: must be in [3, 1e8]");
   require(lv.min_fill >= 0 && lv.min_fill <= 1, "level.min_fill: must be in [0, 1]");
+  require(lv.min_support_area_m2 >= 0, "level.min_support_area_m2: must be >= 0");
+  require(lv.min_support_surround >= 0 && lv.min_support_surround <= 1,
+          "level.min_support_surround: must be in [0, 1]");
+  require(lv.warn_horizon_share >= 0 && lv.warn_horizon_share <= 1,
+          "level.warn_horizon_share: must be in [0, 1]");
+  require(lv.warn_floor_share >= 0 && lv.warn_floor_share <= 1,
+          "level.warn_floor_share: must be in [0, 1]");
 }
 
-LevelResult estimate_level(const std::vector<Eigen::Vector3f>& points, const LevelParams& params) {
+LevelResult estimate_level(const std::vector<Eigen::Vector3f>& points, const LevelParams& params,
+                           const std::vector<Eigen::Vector3d>& scanners) {
   validate(params);
   LevelResult r;
   if (!params.enabled) {
@@ -235,13 +244,18 @@ LevelResult estimate_level(const std::vector<Eigen::Vector3f>& points, const Lev
     r.note = "ceiling plane only (no floor plane found)";
   } else {
     r.note = "no near-horizontal floor or ceiling plane found; cloud left as it is";
+    detail::level_supported(sample, params, scanners, r);  // for the warnings
+    return r;
+  }
+  r.tilt_deg = rad2deg(std::acos(std::clamp(up.z(), -1.0, 1.0)));
+  if (!detail::level_supported(sample, params, scanners, r)) {
+    r.tilt_deg = 0.0;  // refused: the rotation is the identity (the note names the tilt)
     return r;
   }
   r.levelled = true;
   r.up_input = up;
   r.map_from_input =
       Eigen::Quaterniond::FromTwoVectors(up, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  r.tilt_deg = rad2deg(std::acos(std::clamp(up.z(), -1.0, 1.0)));
   return r;
 }
 

@@ -36,6 +36,7 @@ json object_json(const objects::FurnitureObject& o) {
         {"angle_deg", o.box.angle_deg}}},
       {"footprint", fp},
       {"point_count", o.point_count},
+      {"seen_cells", o.seen_cells},
       {"touches_wall", o.touches_wall},
       {"on_floor", o.on_floor},
   };

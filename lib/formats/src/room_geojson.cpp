@@ -4,6 +4,7 @@
 
 #include "indoormap/border/border.hpp"
 #include "indoormap/core/atomic_file.hpp"
+#include "indoormap/core/polygon.hpp"
 #include "json_read.hpp"
 #include "json_write.hpp"
 
@@ -30,6 +31,18 @@ json object_json(const border::InteriorObject& o) {
           {"max_cell", {o.max.col, o.max.row}},
           {"cells", o.cells},
           {"kind", std::string(border::to_string(o.kind))}};
+}
+
+// Inside or on the room: every vertex of `shape` lies inside `room` or within 1 um of its edges.
+bool room_geojson_inside_or_on(const indoormap::Polygon& room, const indoormap::Polygon& shape) {
+  for (const auto& p : shape) {
+    if (indoormap::contains(room, p)) continue;
+    bool on = false;
+    for (std::size_t i = 0; i < room.size() && !on; ++i)
+      on = indoormap::point_segment_distance(p, room[i], room[(i + 1) % room.size()]) <= 1e-6;
+    if (!on) return false;
+  }
+  return true;
 }
 
 std::vector<Polygon> read_room_geojson_unguarded(const fs::path& path) {
@@ -79,9 +92,12 @@ json room_geojson(const border::BorderResult& r) {
          {"geometry", {{"type", "LineString"}, {"coordinates", {xy_json(o.a_m), xy_json(o.b_m)}}}},
          {"properties",
           {{"kind", "opening"}, {"width_m", o.width_m}, {"door_candidate", o.is_door_candidate}}}});
+  // Interior objects only inside or on the room (the others are other rooms' or the outside's
+  // components; room.json lists them all). Without a room, none.
   for (const auto& o : r.interior_objects) {
     const indoormap::Polygon box{
         o.min_m, {o.max_m.x(), o.min_m.y()}, o.max_m, {o.min_m.x(), o.max_m.y()}};
+    if (!r.closed || !room_geojson_inside_or_on(r.polygon_m, box)) continue;
     features.push_back(
         {{"type", "Feature"},
          {"geometry", {{"type", "Polygon"}, {"coordinates", json::array({ring_json(box)})}}},

@@ -71,7 +71,8 @@ void validate(const MapParams& params) {
 
 cloud::LevelResult level_cloud(PointCloud& cloud, const MapParams& params,
                                std::vector<std::string>& warnings) {
-  cloud::LevelResult level = cloud::estimate_level(cloud.points, params.level);
+  cloud::LevelResult level = cloud::estimate_level(cloud.points, params.level, cloud.scanners);
+  warnings.insert(warnings.end(), level.warnings.begin(), level.warnings.end());
   if (level.levelled)
     cloud::rotate(cloud, level.map_from_input);
   else if (params.level.enabled)

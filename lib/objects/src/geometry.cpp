@@ -75,6 +75,21 @@ std::vector<Eigen::Vector2d> outline(const Grid<std::int32_t>& labels, int id, C
   for (int r = lo.row; r <= hi.row; ++r)
     for (int c = lo.col; c <= hi.col; ++c)
       if (labels.at(c, r) == id) m.at<std::uint8_t>(r - lo.row + 1, c - lo.col + 1) = 255;
+  // A label joined from fragments a gap apart (join_fragments) is closed across its gaps first,
+  // so that its outline holds all its parts; the padding keeps the closing inside the image.
+  cv::Mat parts;
+  if (cv::connectedComponents(m, parts, 8) > 2) {
+    constexpr int kPad = 4;
+    cv::Mat padded, closed;
+    cv::copyMakeBorder(m, padded, kPad, kPad, kPad, kPad, cv::BORDER_CONSTANT, 0);
+    for (int k = 1; k <= kPad - 1; ++k) {
+      const int size = 2 * k + 1;
+      cv::morphologyEx(padded, closed, cv::MORPH_CLOSE,
+                       cv::getStructuringElement(cv::MORPH_RECT, {size, size}));
+      if (cv::connectedComponents(closed, parts, 8) <= 2) break;
+    }
+    m = closed(cv::Rect(kPad, kPad, m.cols, m.rows)).clone();
+  }
   cv::Mat up, inner;
   cv::resize(m, up, {}, kUp, kUp, cv::INTER_NEAREST);
   cv::erode(up, inner, cv::getStructuringElement(cv::MORPH_RECT, {3, 3}));

@@ -137,10 +137,12 @@ void list_objects(const std::vector<Acc>& acc, const Labels& lab, const GridGeom
   for (int id = 1; id <= lab.count; ++id) {
     const Acc& a = acc[id];
     if (a.cells * cell_area < params.min_area_m2) continue;
+    if (static_cast<double>(a.tops.size()) * cell_area < params.min_seen_area_m2) continue;
     FurnitureObject o;
     o.id = static_cast<int>(res.objects.size()) + 1;
     new_id[id] = o.id;
     o.cells = a.cells;
+    o.seen_cells = static_cast<std::int64_t>(a.tops.size());
     o.start_cell = a.start;
     o.min_cell = a.lo;
     o.max_cell = a.hi;
@@ -206,11 +208,35 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
   // with data so that they join the object they fill.
   const ColumnScan scan = scan_columns(layout, voxels, layers, params, mask);
   const Grid<float> top = fill_tops(geo, voxels, scan, scanners_map, mask);
-  const Labels lab = label_objects(mask, top, geo, params, scan.any_data);
-  list_objects(accumulate(lab, scan.cols, layout), lab, geo, voxels, layers, params, res);
+  const Labels lab =
+      join_fragments(label_objects(mask, top, geo, params, scan.any_data), top, geo.cell_m(), params);
+  const std::vector<Acc> acc = accumulate(lab, scan.cols, layout);
+  list_objects(acc, lab, geo, voxels, layers, params, res);
+  res.left_over_pieces = lab.count - static_cast<std::int64_t>(res.objects.size());
+  for (std::size_t i = 0; i < layout.size(); ++i)
+    res.left_over_cells += layout.data[i] == Cell::kFurniture && res.labels.data[i] == 0;
+  res.left_over_area_m2 = static_cast<double>(res.left_over_cells) * geo.cell_m() * geo.cell_m();
   measure_objects(geo, voxels, res);
   if (params.pillar_max_extent_m > 0) add_pillars(layout, geo, voxels, layers, params, res);
   if (params.lamp_max_extent_m > 0) add_lamps(layout, geo, voxels, layers, params, res);
+  // No object below the minimum area, of any kind (a pillar's or a lamp's area is its fitted
+  // footprint's, which may be smaller than its cells').
+  std::erase_if(res.objects, [&](const FurnitureObject& o) {
+    const bool drop = o.kind != ObjectKind::kFurniture && o.kind != ObjectKind::kHanging &&
+                      o.area_m2 < params.min_area_m2;
+    if (drop && o.own_cells.empty())
+      for (auto& v : res.labels.data) v = v == o.id ? 0 : v;
+    return drop;
+  });
+  for (std::size_t k = 0; k < res.objects.size(); ++k) {
+    FurnitureObject& o = res.objects[k];
+    const int id = static_cast<int>(k) + 1;
+    if (o.id != id && o.own_cells.empty())
+      for (int r = o.min_cell.row; r <= o.max_cell.row; ++r)
+        for (int c = o.min_cell.col; c <= o.max_cell.col; ++c)
+          if (res.labels.at(c, r) == o.id) res.labels.at(c, r) = id;
+    o.id = id;
+  }
   return res;
 }
 

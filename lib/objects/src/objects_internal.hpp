@@ -56,6 +56,13 @@ Grid<float> fill_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
                       const ColumnScan& scan, const std::vector<Eigen::Vector3d>& scanners_map,
                       Grid<std::uint8_t>& mask);
 
+/// Joins the fragments of one piece of furniture (fragments.cpp): labels at most
+/// params.join_gap_m apart whose median tops (`top`, NaN = unknown) differ by at most
+/// params.split_height_step_m become one; a set still below params.min_area_m2 then joins the
+/// largest set within the gap. Labels may come out in several parts; numbered in raster order.
+Labels join_fragments(const Labels& in, const Grid<float>& top, double cell_m,
+                      const ObjectParams& params);
+
 OrientedBox min_area_box(const std::vector<Eigen::Vector2d>& pts);
 
 // The four corners of a cell (map metres), for minimum-area rectangles of cell sets.

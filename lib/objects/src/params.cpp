@@ -8,6 +8,8 @@ void validate(const ObjectParams& ob) {
     if (!ok) throw UsageError("invalid parameter " + what);
   };
   require(ob.min_area_m2 >= 0, "objects.min_area_m2: must be >= 0");
+  require(ob.join_gap_m >= 0 && ob.join_gap_m <= 1, "objects.join_gap_m: must be in [0, 1]");
+  require(ob.min_seen_area_m2 >= 0, "objects.min_seen_area_m2: must be >= 0");
   require(ob.crop_margin_m >= 0 && ob.crop_margin_m <= 10,
           "objects.crop_margin_m: must be in [0, 10]");
   require(ob.split_height_step_m >= 0, "objects.split_height_step_m: must be >= 0 (0: off)");

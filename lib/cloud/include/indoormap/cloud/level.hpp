@@ -13,7 +13,22 @@ namespace indoormap::cloud {
 
 struct LevelParams {
   bool enabled = true;
-  double max_tilt_deg = 10.0;  ///< planes tilted more than this are not floor / ceiling
+  /// Planes tilted more than this are not floor / ceiling, and no larger correction is made: a
+  /// real scanner on a tripod stands within a few degrees of level; a steeper "floor" is a
+  /// nearby object's face or a slope seen from one side.
+  double max_tilt_deg = 5.0;
+  /// The plane a tilt rests on must hold this much area (0.25 m cells with inliers) ...
+  double min_support_area_m2 = 4.0;
+  /// ... and, when the scanner positions are known, reach round a scanner: this share of the
+  /// 10 degree sectors round it hold inliers. Fitted to one side only, a plane tilts with that
+  /// side's unevenness and the scanner's own errors (a 40 degree sector of the Jacobs scan:
+  /// 2.63 degrees where the whole scan says 2.13); such a tilt is refused.
+  double min_support_surround = 0.75;
+  /// A scan covering less of the horizon round every scanner than this gets a warning.
+  double warn_horizon_share = 0.9;
+  /// A cloud whose levelling plane holds less than this share of the cloud's area (both on
+  /// 0.25 m cells) gets a warning: its floor is nearly all unseen.
+  double warn_floor_share = 0.2;
   double band_m = 0.6;         ///< search band around the floor / ceiling histogram peak
   double peak_fraction = 0.2;  ///< floor / ceiling: lowest / highest 0.1 m height bin with this
                                ///< share of the fullest bin
@@ -39,6 +54,18 @@ struct PlaneFit {
   double rms_m = 0.0;                                 ///< RMS distance of the inliers
 };
 
+/// What a levelling plane rests on (level_support).
+struct LevelSupport {
+  double plane_area_m2 = 0.0;         ///< 0.25 m cells holding the plane's inliers
+  double cloud_area_m2 = 0.0;         ///< 0.25 m cells holding >= 1/20 of the median count
+  double plane_surround_share = 0.0;  ///< best over the scanners; 1 without scanners
+  double horizon_share = 0.0;         ///< of all points, best over the scanners; 1 without
+};
+
+/// The support of `plane` among `sample` (inliers: within inlier_m), round the scanners.
+LevelSupport level_support(const std::vector<Eigen::Vector3d>& sample, const PlaneFit& plane,
+                           double inlier_m, const std::vector<Eigen::Vector3d>& scanners);
+
 struct LevelResult {
   bool levelled = false;  ///< false: rotation is identity (disabled or no plane found)
   Eigen::Matrix3d map_from_input = Eigen::Matrix3d::Identity();  ///< rotation about the origin
@@ -47,12 +74,19 @@ struct LevelResult {
   PlaneFit floor;                                       ///< in the input frame
   PlaneFit ceiling;                                     ///< in the input frame
   std::string note;  ///< why not levelled, or which planes were used
+  LevelSupport support;               ///< of the plane the tilt rests on (the floor if found)
+  std::vector<std::string> warnings;  ///< partial horizon, floor nearly unseen, refused tilt
 };
 
 /// Estimates the levelling rotation. Deterministic for a fixed seed. Never throws on data it
 /// cannot level: the result says so (levelled = false) and why. Throws UsageError for invalid
 /// params.
-LevelResult estimate_level(const std::vector<Eigen::Vector3f>& points, const LevelParams& params);
+/// With the scanner positions (input frame), a tilt is refused (levelled = false, a warning) when
+/// the plane it rests on holds less than min_support_area_m2 or reaches round no scanner
+/// (min_support_surround); a scan covering less than warn_horizon_share of the horizon, or a
+/// floor holding less than warn_floor_share of the cloud's area, gets a warning naming the share.
+LevelResult estimate_level(const std::vector<Eigen::Vector3f>& points, const LevelParams& params,
+                           const std::vector<Eigen::Vector3d>& scanners = {});
 
 /// Rotates points and scanner positions in place: p <- R p.
 void rotate(PointCloud& cloud, const Eigen::Matrix3d& rotation);

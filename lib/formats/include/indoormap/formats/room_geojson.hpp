@@ -21,8 +21,10 @@ nlohmann::json border_opening_json(const border::Opening& o);
 
 /// room.geojson: a FeatureCollection in map metres: the room Polygon (kind "room", area_m2,
 /// perimeter_m; counter-clockwise, closed ring) when the border is closed, one LineString per
-/// opening (kind "opening", width_m, door_candidate) and the interior objects' boxes (kind
-/// "interior_object"); "closed", and the "reason" when it is not.
+/// opening (kind "opening", width_m, door_candidate) and the boxes of the interior objects that lie
+/// inside or on the room polygon (kind "interior_object", class "ring" / "object", cells; the
+/// others are in room.json only); "closed", and the "reason" when it is not (then no room and no
+/// interior objects, only the openings).
 nlohmann::json room_geojson(const border::BorderResult& r);
 void write_room_geojson(const std::filesystem::path& path, const border::BorderResult& r);
 

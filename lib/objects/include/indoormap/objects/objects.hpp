@@ -16,7 +16,20 @@
 namespace indoormap::objects {
 
 struct ObjectParams {
-  double min_area_m2 = 0.02;  ///< smaller components are not listed (they stay furniture in M_r)
+  /// No object smaller than this is listed, of any kind (smaller pieces stay furniture in M_r and
+  /// are counted as left over). The smallest real item of the simulator's scenes is a bin of
+  /// 0.12 m radius (0.045 m2); seen from one side with its hidden back filled in it covers
+  /// 0.035 m2 or more (docs/furniture-extract.md), so 0.03 keeps every bin and drops the specks.
+  double min_area_m2 = 0.03;
+  /// Pieces at most this far apart (one cell: the empty cells between them) whose median tops differ by at most
+  /// split_height_step_m are one object (a shadow or a missed row of samples cut it); a piece
+  /// still below min_area_m2 joins the largest object within this gap. 0: no joining.
+  double join_gap_m = 0.05;
+  /// An object needs this much seen area (seen_cells): less is a pocket the layout filled along a
+  /// wall, or a wall's face, with a few stray points, not furniture (it is left over).
+  /// 0.04: the smallest simulated bin (0.045 m2) is lower than the scanner, so its whole top is
+  /// seen.
+  double min_seen_area_m2 = 0.04;
   Connectivity connectivity = Connectivity::k4;  ///< the paper's choice
   double crop_margin_m = 0.05;  ///< crops take the footprint dilated by this much, and z +- it
   /// Touching objects of different heights are split: neighbouring cells whose tops differ by
@@ -69,6 +82,9 @@ struct FurnitureObject {
   double z_min_m = 0.0, z_max_m = 0.0;  ///< map frame; z_min = floor height when it stands on it
   bool on_floor = false;
   std::uint64_t point_count = 0;  ///< points above the footprint within [z_min, z_max]
+  /// Cells whose own column holds the object's points (not filled in from a neighbour, not a
+  /// wall's face): the part of the footprint the scanner saw.
+  std::int64_t seen_cells = 0;
   bool touches_wall = false;      ///< a cell is 8-adjacent to a wall cell
   /// The object's cells when they are not those of `labels` (a lamp over a table shares its
   /// cells with it); empty otherwise.
@@ -79,6 +95,12 @@ struct ObjectsResult {
   std::vector<FurnitureObject> objects;
   Grid<std::int32_t> labels;  ///< object id per cell (0: none, or below min_area); lamps are not
                               ///< in it (see own_cells)
+  /// Furniture cells of the layout that no listed object holds: pieces below min_area_m2 with no
+  /// object within join_gap_m, and cells whose floor was seen or that a scanner saw into (no data,
+  /// nothing stands there). furniture cells = cells of the furniture-class objects + these.
+  std::int64_t left_over_cells = 0;
+  double left_over_area_m2 = 0.0;
+  std::int64_t left_over_pieces = 0;  ///< pieces not listed (too small, or too little seen)
 };
 
 /// Finds the objects of the furniture class. voxels supplies heights; it must cover the layout's

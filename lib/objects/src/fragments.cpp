@@ -1,0 +1,125 @@
+// Fragments of one piece of furniture joined into their object (issue 17): shadows, the height
+// rule and a lamp above cut a desk into pieces a cell or two apart; what no object takes is left
+// over (counted in the result, not listed).
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "objects_internal.hpp"
+
+namespace indoormap::objects::detail {
+
+namespace {
+
+int fragments_find(std::vector<int>& parent, int x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+// Median of the known tops of each label (NaN when none is known).
+std::vector<double> fragments_median_tops(const Labels& lab, const Grid<float>& top) {
+  std::vector<std::vector<float>> tops(static_cast<std::size_t>(lab.count) + 1);
+  for (std::size_t i = 0; i < lab.labels.size(); ++i)
+    if (lab.labels.data[i] && !std::isnan(top.data[i]))
+      tops[lab.labels.data[i]].push_back(top.data[i]);
+  std::vector<double> med(tops.size(), kNoHeight);
+  for (std::size_t k = 1; k < tops.size(); ++k) {
+    auto& t = tops[k];
+    if (t.empty()) continue;
+    std::nth_element(t.begin(), t.begin() + static_cast<std::ptrdiff_t>(t.size() / 2), t.end());
+    med[k] = t[t.size() / 2];
+  }
+  return med;
+}
+
+// Pairs of labels whose cells come within gap_cells empty cells of each other (Chebyshev), with
+// the number of cell pairs that close (the strength of the contact).
+std::map<std::pair<int, int>, std::int64_t> fragments_near_pairs(const Labels& lab, int gap_cells) {
+  std::map<std::pair<int, int>, std::int64_t> near;
+  const Grid<std::int32_t>& g = lab.labels;
+  const int reach = gap_cells + 1;
+  for (int r = 0; r < g.height; ++r)
+    for (int c = 0; c < g.width; ++c) {
+      const int a = g.at(c, r);
+      if (!a) continue;
+      // Forward half of the neighbourhood only: every unordered cell pair is seen once.
+      for (int dr = 0; dr <= reach; ++dr)
+        for (int dc = -reach; dc <= reach; ++dc) {
+          if (dr == 0 && dc <= 0) continue;
+          if (!g.contains(c + dc, r + dr)) continue;
+          const int b = g.at(c + dc, r + dr);
+          if (b && b != a) ++near[{std::min(a, b), std::max(a, b)}];
+        }
+    }
+  return near;
+}
+
+}  // namespace
+
+Labels join_fragments(const Labels& in, const Grid<float>& top, double cell_m,
+                      const ObjectParams& params) {
+  const int n = in.count;
+  if (n < 2 || params.join_gap_m <= 0) return in;
+  const int gap = static_cast<int>(std::floor(params.join_gap_m / cell_m + 1e-6));
+  const auto min_cells =
+      static_cast<std::int64_t>(std::ceil(params.min_area_m2 / (cell_m * cell_m) - 1e-9));
+  std::vector<std::int64_t> area(n + 1, 0);
+  for (int v : in.labels.data) ++area[v];
+  const std::vector<double> med = fragments_median_tops(in, top);
+  const auto near = fragments_near_pairs(in, gap);
+  std::vector<int> parent(n + 1);
+  for (int i = 0; i <= n; ++i) parent[i] = i;
+  std::vector<std::int64_t> set_area = area;
+  // 1. Pieces a gap apart whose tops agree within the height step are one piece of furniture
+  //    (a shadow or a missed row of samples cut it). Touching pieces were split by the height
+  //    rule on purpose and are not joined again here (their tops differ).
+  for (const auto& [pair, count] : near) {
+    const double ta = med[pair.first], tb = med[pair.second];
+    if (std::isnan(ta) || std::isnan(tb)) continue;
+    if (std::abs(ta - tb) > params.split_height_step_m + 1e-6) continue;
+    int a = fragments_find(parent, pair.first), b = fragments_find(parent, pair.second);
+    if (a == b) continue;
+    if (a > b) std::swap(a, b);
+    parent[b] = a;
+    set_area[a] += set_area[b];
+  }
+  // 2. Sets still below the minimum area join the largest set within the gap, whatever its
+  //    height (a sliver seen under a table's edge, the lower shelf beside a cabinet); smallest
+  //    first. Sets with no such neighbour stay: the caller leaves them over.
+  std::vector<int> order;
+  for (int i = 1; i <= n; ++i)
+    if (fragments_find(parent, i) == i) order.push_back(i);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return set_area[a] < set_area[b] || (set_area[a] == set_area[b] && a < b);
+  });
+  for (int piece : order) {
+    const int root = fragments_find(parent, piece);
+    if (set_area[root] >= min_cells) continue;
+    int best = -1;
+    for (const auto& [pair, count] : near) {
+      const int a = fragments_find(parent, pair.first), b = fragments_find(parent, pair.second);
+      if (a == b || (a != root && b != root)) continue;
+      const int other = a == root ? b : a;
+      if (best < 0 || set_area[other] > set_area[best] ||
+          (set_area[other] == set_area[best] && other < best))
+        best = other;
+    }
+    if (best < 0) continue;
+    parent[root] = best;
+    set_area[best] += set_area[root];
+  }
+  // Relabel densely in raster order of each set's first cell.
+  Labels out;
+  out.labels = Grid<std::int32_t>(in.labels.width, in.labels.height, 0);
+  std::vector<int> dense(n + 1, 0);
+  for (std::size_t i = 0; i < in.labels.size(); ++i) {
+    const int v = in.labels.data[i];
+    if (!v) continue;
+    const int root = fragments_find(parent, v);
+    if (!dense[root]) dense[root] = ++out.count;
+    out.labels.data[i] = dense[root];
+  }
+  return out;
+}
+
+}  // namespace indoormap::objects::detail
