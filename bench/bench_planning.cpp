@@ -86,12 +86,14 @@ void BM_Region(benchmark::State& st) {
   const auto wave = lee_wave(safe, a, b);
   for (auto _ : st) benchmark::DoNotOptimize(trajectory_region(wave, a, b));
 }
-/// Scenario generation = plan_routes (wave + region + moves + ranking), paper rules only or
-/// combined with the exact search (range 1).
+/// Scenario generation = plan_routes (wave + region + moves + ranking), paper rules only (range 1
+/// = 0) or combined with the exact search (1) or the min-link search (2, the default).
 void BM_Scenario(benchmark::State& st) {
   const auto& s = scene(static_cast<int>(st.range(0)));
   PlannerParams p = kParams;
-  p.search = st.range(1) != 0 ? RouteSearch::kExact : RouteSearch::kPaper;
+  p.search = st.range(1) == 0   ? RouteSearch::kPaper
+             : st.range(1) == 1 ? RouteSearch::kExact
+                                : RouteSearch::kMinLink;
   const auto tmpl = make_templates(kRobot, p, 0.05);
   const auto safe = safe_zone(s.layout, tmpl.disk);
   for (auto _ : st) benchmark::DoNotOptimize(plan_routes(safe, s.geo, s.start, s.goal, tmpl, p));
@@ -117,8 +119,10 @@ BENCHMARK(BM_Region)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Scenario)
     ->Args({0, 0})
     ->Args({0, 1})
+    ->Args({0, 2})
     ->Args({1, 0})
     ->Args({1, 1})
+    ->Args({1, 2})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_WholePlanning)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();

@@ -231,3 +231,61 @@ TEST(MinLink, FarApartCellsAreTheDoubleSweepsEnds) {
   EXPECT_EQ(far->second, (CellIndex{2, 2}));
   EXPECT_FALSE(far_apart_cells(Grid<SafeCell>(5, 5, SafeCell::kUnsafe)));
 }
+
+TEST(MinLink, SupercoverIsSymmetric) {
+  // The layered search grows from the goal too, so a move must be valid both ways: the
+  // supercover of -o is the mirror of the supercover of o, for every offset of a 3 m template.
+  const auto t = make_neighbourhood_template(3.0, 0.05);
+  for (const auto& e : t.end_points) {
+    const auto& o = e.offset;
+    auto fwd = supercover(o.col, o.row);
+    auto back = supercover(-o.col, -o.row);
+    std::set<std::pair<int, int>> a, b;
+    for (const auto& c : fwd) a.insert({c.col, c.row});
+    for (const auto& c : back) b.insert({o.col + c.col, o.row + c.row});
+    ASSERT_EQ(a, b) << "offset " << o.col << ", " << o.row;
+  }
+}
+
+TEST(MinLink, ShortLastMovesAndLongDmin) {
+  // D_min 0.8 m of D_max 1.5 m: every move but the last is long, so near goals need detours and
+  // the goal side's first layer (the route's last move, any length) differs from the others.
+  // Random and near pairs against the brute-force reference.
+  std::mt19937 rng(16016);
+  const double cell_m = 0.1;
+  PlannerParams p = small_params(1.5);
+  p.d_min_m = 0.8;
+  const auto tmpl = make_templates(kRobot, p, cell_m);
+  int pairs = 0, detours = 0;
+  for (int map = 0; map < 12; ++map) {
+    const auto m = random_map(rng, cell_m);
+    const auto safe = safe_zone(m.layout, tmpl.disk);
+    const auto cells = safe_cells(safe);
+    if (cells.size() < 2) continue;
+    for (int k = 0; k < 6; ++k) {
+      const CellIndex s = cells[rng() % cells.size()];
+      CellIndex g = cells[rng() % cells.size()];
+      if (k % 2 == 0) {  // a goal within D_min of the start where there is one
+        for (const auto& c : cells)
+          if (!(c == s) && std::hypot(c.col - s.col, c.row - s.row) * cell_m < 0.5 &&
+              rng() % 4 == 0) {
+            g = c;
+            break;
+          }
+      }
+      const int ref = reference_min_moves(safe, s, g, cell_m, p.d_min_m, p.d_max_m);
+      const auto ml = min_link_moves(safe, s, g, tmpl.neighbourhood, p);
+      ASSERT_TRUE(ml.complete);
+      const int got = ml.cells ? static_cast<int>(ml.cells->size()) - 1 : -1;
+      ASSERT_EQ(got, ref) << "map " << map << " pair " << k;
+      if (ml.cells) {
+        const Route r = make_route(*ml.cells, m.geo, 0.0, std::nullopt);
+        EXPECT_EQ(check_route(r, safe, m.geo, s, g, p), "") << "map " << map;
+        detours += ref >= 2 && std::hypot(g.col - s.col, g.row - s.row) * cell_m < p.d_max_m;
+      }
+      ++pairs;
+    }
+  }
+  EXPECT_GE(pairs, 60);
+  EXPECT_GE(detours, 3);  // goals in reach of one move that still take two or more
+}

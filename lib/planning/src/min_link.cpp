@@ -23,12 +23,11 @@ namespace indoormap::planning::detail {
 
 namespace {
 
-constexpr std::uint32_t kFar = std::numeric_limits<std::uint32_t>::max();
 /// sqrt(4 - 2 sqrt 2), rounded up: the largest octile / Euclidean length ratio.
 constexpr double kOctile = 1.0823922002923941 * (1 + 1e-12);
 
-/// Chamfer (5-7) distance from the goal to every kSafe cell over 8-neighbour steps between kSafe
-/// cells (diagonals past corners too); kFar where not connected. Dial's buckets: O(cells).
+}  // namespace
+
 std::vector<std::uint32_t> chamfer_from(const Grid<SafeCell>& safe, CellIndex goal) {
   const int w = safe.width, h = safe.height;
   std::vector<std::uint32_t> d(safe.size(), kFar);
@@ -59,6 +58,8 @@ std::vector<std::uint32_t> chamfer_from(const Grid<SafeCell>& safe, CellIndex go
   }
   return d;
 }
+
+namespace {
 
 /// Upper bound (cells) on the distance from each prefix-tree node to the end points of its
 /// subtree, bottom up over the depth-first order.
@@ -149,54 +150,6 @@ struct Graph {
   }
 };
 
-/// A* on the number of moves with the chamfer bound (consistent: a move lowers it by at most
-/// one), buckets by f = moves + bound, deepest first within a bucket. Returns the fewest moves (-1:
-/// none within `bound`, or the budget ran out: res.complete) and the route in parent.
-int fewest_moves(const Graph& gr, std::int32_t start, int bound, std::vector<std::int32_t>& parent,
-                 ExactResult& res, SearchBudget& budget) {
-  const std::size_t n = gr.safe.size();
-  std::vector<std::int32_t> g(n, std::numeric_limits<std::int32_t>::max());
-  std::vector<std::uint8_t> closed(n, 0);
-  std::vector<std::vector<std::int32_t>> bucket;
-  auto push = [&](std::int32_t i, int f) {
-    if (static_cast<std::size_t>(f) >= bucket.size())
-      bucket.resize(static_cast<std::size_t>(f) + 1);
-    bucket[static_cast<std::size_t>(f)].push_back(i);
-  };
-  g[static_cast<std::size_t>(start)] = 0;
-  push(start, gr.hops(start));
-  for (std::size_t fu = 0; fu < bucket.size(); ++fu) {
-    while (!bucket[fu].empty()) {
-      const std::int32_t ci = bucket[fu].back();
-      bucket[fu].pop_back();
-      const auto cu = static_cast<std::size_t>(ci);
-      const int gc = g[cu];
-      if (closed[cu] || static_cast<std::size_t>(gc + gr.hops(ci)) != fu) continue;  // stale
-      closed[cu] = 1;
-      if (!budget.spend("min_link", res.nodes)) {
-        res.complete = false;
-        return -1;
-      }
-      // The goal one move away (the bound is then 1) is reached with gc + 1 = f moves, and no
-      // route has fewer than f: every cell with a lower f has been expanded.
-      if (gr.hops(ci) == 1 && gr.sees(ci, gr.goal)) {
-        parent[static_cast<std::size_t>(gr.goal)] = ci;
-        return gc + 1;
-      }
-      bool cut = false;  // moves beyond `bound` are skipped
-      const int left = bound == std::numeric_limits<int>::max() ? 1 << 20 : bound - gc - 1;
-      gr.moves_from(ci, left, cut, [&](std::int32_t ni, double) {
-        const auto nu = static_cast<std::size_t>(ni);
-        if (gc + 1 >= g[nu]) return;
-        g[nu] = gc + 1;
-        parent[nu] = ci;
-        push(ni, gc + 1 + gr.hops(ni));
-      });
-    }
-  }
-  return -1;
-}
-
 /// Tie-break among routes of equal moves: each waypoint in turn moves to the cell that makes its
 /// two moves shortest while both stay valid (two sweeps). A local improvement: the route keeps
 /// its moves and gets no longer, but is not always the shortest with that many moves.
@@ -224,6 +177,17 @@ void shorten(const Graph& gr, std::vector<std::int32_t>& route) {
 
 }  // namespace
 
+std::vector<std::uint16_t> moves_bound_from(const std::vector<std::uint32_t>& d,
+                                            const NeighbourhoodTemplate& t) {
+  const double per_move = 5.0 * kOctile * std::sqrt(std::pow(t.d_max_m / t.cell_m, 2) + 1e-9);
+  std::vector<std::uint16_t> out(d.size(), kNoMovesBound);
+  for (std::size_t i = 0; i < d.size(); ++i)
+    if (d[i] != kFar)
+      out[i] = static_cast<std::uint16_t>(
+          std::min(65534.0, std::ceil(static_cast<double>(d[i]) / per_move - 1e-9)));
+  return out;
+}
+
 ExactResult min_link_search(const Grid<SafeCell>& safe, CellIndex start, CellIndex goal,
                             const NeighbourhoodTemplate& t, const PlannerParams& p, int bound,
                             SearchBudget& budget) {
@@ -239,12 +203,8 @@ ExactResult min_link_search(const Grid<SafeCell>& safe, CellIndex start, CellInd
   const auto si = static_cast<std::int32_t>(idx(w, start));
   const Graph gr{safe, t, p, static_cast<std::int32_t>(idx(w, goal))};
   if (gr.hops(si) < 0) return res;  // not connected to the goal at all
-  std::vector<std::int32_t> parent(safe.size(), -1);
-  if (fewest_moves(gr, si, bound, parent, res, budget) < 0) return res;
   std::vector<std::int32_t> route;
-  for (std::int32_t i = gr.goal; i >= 0; i = parent[static_cast<std::size_t>(i)])
-    route.push_back(i);
-  std::reverse(route.begin(), route.end());
+  if (layered_fewest_moves(safe, t, p, si, gr.goal, bound, route, res, budget) < 0) return res;
   shorten(gr, route);
   res.cells.emplace();
   for (const auto i : route) res.cells->push_back({i % w, i / w});

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -110,6 +111,24 @@ std::vector<std::vector<CellIndex>> paper_search(const Grid<SafeCell>& safe,
 ExactResult exact_search(const Grid<SafeCell>& safe, CellIndex start, CellIndex goal,
                          const NeighbourhoodTemplate& t, const PlannerParams& p, int bound,
                          SearchBudget& budget);
+
+inline constexpr std::uint32_t kFar = std::numeric_limits<std::uint32_t>::max();
+/// Chamfer (5-7) distance from `root` to every kSafe cell over 8-neighbour steps between kSafe
+/// cells (diagonals past corners too); kFar where not connected. Dial's buckets: O(cells).
+std::vector<std::uint32_t> chamfer_from(const Grid<SafeCell>& safe, CellIndex root);
+
+inline constexpr std::uint16_t kNoMovesBound = 0xFFFF;
+/// A lower bound on the moves between every cell and the root of the chamfer distances `d`
+/// (min_link.cpp: d / the longest move's chamfer length); kNoMovesBound where not connected.
+std::vector<std::uint16_t> moves_bound_from(const std::vector<std::uint32_t>& d,
+                                            const NeighbourhoodTemplate& t);
+
+/// The fewest moves from start to goal (flat indices) by the bidirectional layered search of
+/// link_layers.cpp, at most `bound`; -1 when none (or the budget ran out: res.complete false).
+/// `route` gets the cells, start first.
+int layered_fewest_moves(const Grid<SafeCell>& safe, const NeighbourhoodTemplate& t,
+                         const PlannerParams& p, std::int32_t start, std::int32_t goal, int bound,
+                         std::vector<std::int32_t>& route, ExactResult& res, SearchBudget& budget);
 
 /// min_link_moves within a shared budget.
 ExactResult min_link_search(const Grid<SafeCell>& safe, CellIndex start, CellIndex goal,

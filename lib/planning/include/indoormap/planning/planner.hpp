@@ -24,7 +24,7 @@ namespace indoormap::planning {
 /// The search that finds the fewest-moves route (planner.search): both optimal searches return
 /// the same number of moves and the same (shortest) length among the fewest-moves routes.
 enum class RouteSearch {
-  kMinLink,  ///< minimum-link search: A* on moves with a geodesic bound (docs/route-planning.md)
+  kMinLink,  ///< minimum-link search: bidirectional link-distance layers (docs/route-planning.md)
   kExact,    ///< A* on (moves, length) with a straight-line bound: the reference, slow on buildings
   kPaper,    ///< none: the paper's rules alone (they can miss the fewest-moves route)
 };
@@ -185,10 +185,11 @@ ExactResult exact_min_moves(const Grid<SafeCell>& safe, CellIndex start, CellInd
                             const NeighbourhoodTemplate& tmpl, const PlannerParams& params,
                             int bound = std::numeric_limits<int>::max());
 
-/// The same lexicographic minimum (moves, length) route as exact_min_moves, by a minimum-link
-/// search (docs/route-planning.md): A* on the number of moves with a geodesic lower bound (octile
-/// distance to the goal over the safe zone / D_max), then one pass over the move layers for the
-/// shortest of the fewest-moves routes. Moves are checked exactly as exact_min_moves checks them.
+/// The fewest-moves route, as many moves as exact_min_moves, by a minimum-link search
+/// (docs/route-planning.md): bidirectional layered link-distance runs bounded by a geodesic lower
+/// bound (chamfer distance over the safe zone / D_max) for B = that bound, B + 1, ..., then a local
+/// shortening among routes of as many moves (not always the shortest of them). Moves are checked
+/// exactly as exact_min_moves checks them.
 /// bound: only routes of at most that many moves are searched (nullopt: none within it).
 ExactResult min_link_moves(const Grid<SafeCell>& safe, CellIndex start, CellIndex goal,
                            const NeighbourhoodTemplate& tmpl, const PlannerParams& params,
