@@ -208,8 +208,8 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
   // with data so that they join the object they fill.
   const ColumnScan scan = scan_columns(layout, voxels, layers, params, mask);
   const Grid<float> top = fill_tops(geo, voxels, scan, scanners_map, mask);
-  const Labels lab =
-      join_fragments(label_objects(mask, top, geo, params, scan.any_data), top, geo.cell_m(), params);
+  const Labels lab = join_fragments(label_objects(mask, top, geo, params, scan.any_data), top,
+                                    geo.cell_m(), params);
   const std::vector<Acc> acc = accumulate(lab, scan.cols, layout);
   list_objects(acc, lab, geo, voxels, layers, params, res);
   res.left_over_pieces = lab.count - static_cast<std::int64_t>(res.objects.size());

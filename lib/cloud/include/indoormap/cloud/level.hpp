@@ -73,7 +73,7 @@ struct LevelResult {
   Eigen::Vector3d up_input = Eigen::Vector3d::UnitZ();  ///< measured up direction, input frame
   PlaneFit floor;                                       ///< in the input frame
   PlaneFit ceiling;                                     ///< in the input frame
-  std::string note;  ///< why not levelled, or which planes were used
+  std::string note;                   ///< why not levelled, or which planes were used
   LevelSupport support;               ///< of the plane the tilt rests on (the floor if found)
   std::vector<std::string> warnings;  ///< partial horizon, floor nearly unseen, refused tilt
 };

@@ -21,9 +21,9 @@ struct ObjectParams {
   /// 0.12 m radius (0.045 m2); seen from one side with its hidden back filled in it covers
   /// 0.035 m2 or more (docs/furniture-extract.md), so 0.03 keeps every bin and drops the specks.
   double min_area_m2 = 0.03;
-  /// Pieces at most this far apart (one cell: the empty cells between them) whose median tops differ by at most
-  /// split_height_step_m are one object (a shadow or a missed row of samples cut it); a piece
-  /// still below min_area_m2 joins the largest object within this gap. 0: no joining.
+  /// Pieces at most this far apart (one cell: the empty cells between them) whose median tops
+  /// differ by at most split_height_step_m are one object (a shadow or a missed row of samples cut
+  /// it); a piece still below min_area_m2 joins the largest object within this gap. 0: no joining.
   double join_gap_m = 0.05;
   /// An object needs this much seen area (seen_cells): less is a pocket the layout filled along a
   /// wall, or a wall's face, with a few stray points, not furniture (it is left over).
@@ -85,7 +85,7 @@ struct FurnitureObject {
   /// Cells whose own column holds the object's points (not filled in from a neighbour, not a
   /// wall's face): the part of the footprint the scanner saw.
   std::int64_t seen_cells = 0;
-  bool touches_wall = false;      ///< a cell is 8-adjacent to a wall cell
+  bool touches_wall = false;  ///< a cell is 8-adjacent to a wall cell
   /// The object's cells when they are not those of `labels` (a lamp over a table shares its
   /// cells with it); empty otherwise.
   std::vector<CellIndex> own_cells;
