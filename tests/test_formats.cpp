@@ -240,8 +240,9 @@ TEST(RoomGeojson, InteriorObjectsOnlyInsideOrOnTheRoom) {
   EXPECT_EQ(objects[1]["geometry"]["coordinates"][0][0], json::array({0.0, 2.0}));
   EXPECT_EQ(formats::room_json(r, GridGeometry({0, 0}, 0.05, 4, 4))["interior_objects"].size(), 4u);
   r.closed = false;  // no room: no interior object either
-  for (const auto& f : formats::room_geojson(r)["features"])
-    EXPECT_NE(f["properties"]["kind"], "interior_object");
+  const json open_room =
+      formats::room_geojson(r);  // kept: a loop over a temporary's member dangles
+  for (const auto& f : open_room["features"]) EXPECT_NE(f["properties"]["kind"], "interior_object");
 }
 
 // ------------------------------------------------------------------------------ route

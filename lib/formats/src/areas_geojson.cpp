@@ -13,13 +13,6 @@ namespace {
 
 using nlohmann::ordered_json;
 
-ordered_json ring(const Polygon& poly) {
-  ordered_json j = ordered_json::array();
-  for (const auto& p : poly) j.push_back(detail::xy_json<ordered_json>(p));
-  if (!poly.empty()) j.push_back(detail::xy_json<ordered_json>(poly.front()));
-  return j;
-}
-
 ordered_json door_json(const areas::Door& d) {
   return {{"between", {d.a, d.b}},
           {"from", detail::xy_json<ordered_json>(d.end0_m)},
@@ -34,8 +27,8 @@ ordered_json areas_geojson(const areas::AreasResult& r) {
   ordered_json features = ordered_json::array();
   for (const areas::Area& a : r.areas) {
     if (a.outline_m.size() < 3) continue;
-    ordered_json rings = ordered_json::array({ring(a.outline_m)});
-    for (const auto& h : a.holes_m) rings.push_back(ring(h));
+    ordered_json rings = ordered_json::array({detail::ring_json<ordered_json>(a.outline_m)});
+    for (const auto& h : a.holes_m) rings.push_back(detail::ring_json<ordered_json>(h));
     features.push_back({{"type", "Feature"},
                         {"geometry", {{"type", "Polygon"}, {"coordinates", rings}}},
                         {"properties",

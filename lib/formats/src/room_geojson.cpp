@@ -16,14 +16,6 @@ using namespace detail;
 
 namespace {
 
-json ring_json(const indoormap::Polygon& poly) {
-  json ring = json::array();
-  for (const auto& v : poly) ring.push_back(xy_json(v));
-  if (!poly.empty())
-    ring.push_back(xy_json(poly.front()));  // GeoJSON rings repeat the first vertex
-  return ring;
-}
-
 json object_json(const border::InteriorObject& o) {
   return {{"min_m", xy_json(o.min_m)},
           {"max_m", xy_json(o.max_m)},

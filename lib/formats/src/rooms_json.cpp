@@ -1,9 +1,11 @@
 #include "indoormap/formats/rooms_json.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "indoormap/formats/json.hpp"
 #include "json_read.hpp"
+#include "json_write.hpp"
 
 namespace indoormap::formats {
 
@@ -13,20 +15,10 @@ using namespace detail;
 
 namespace {
 
-json rooms_xy(const Eigen::Vector2d& p) {
-  return {p.x(), p.y()};
-}
-
-json rooms_ring(const Polygon& poly) {
-  json ring = json::array();
-  for (const auto& v : poly) ring.push_back(rooms_xy(v));
-  if (!poly.empty()) ring.push_back(rooms_xy(poly.front()));  // GeoJSON rings repeat the first
-  return ring;
-}
-
 int rooms_int(const json& j, const fs::path& path, const std::string& key) {
   const double v = number(j, path, key);
-  if (v != static_cast<double>(static_cast<int>(v))) bad(path, key, "expected an integer");
+  // Range first: converting a double outside int's range is undefined.
+  if (!(std::abs(v) <= 1e9) || v != std::floor(v)) bad(path, key, "expected an integer");
   return static_cast<int>(v);
 }
 
@@ -82,7 +74,7 @@ json rooms_geojson(const rooms::RoomsResult& r) {
     features.push_back(
         {{"type", "Feature"},
          {"geometry",
-          {{"type", "Polygon"}, {"coordinates", json::array({rooms_ring(room.polygon_m)})}}},
+          {{"type", "Polygon"}, {"coordinates", json::array({ring_json(room.polygon_m)})}}},
          {"properties",
           {{"kind", "room"},
            {"id", room.id},
@@ -93,7 +85,7 @@ json rooms_geojson(const rooms::RoomsResult& r) {
     features.push_back(
         {{"type", "Feature"},
          {"geometry",
-          {{"type", "LineString"}, {"coordinates", {rooms_xy(d.end0_m), rooms_xy(d.end1_m)}}}},
+          {{"type", "LineString"}, {"coordinates", {xy_json(d.end0_m), xy_json(d.end1_m)}}}},
          {"properties", {{"kind", "door"}, {"rooms", {d.a, d.b}}, {"width_m", d.width_m}}}});
   return {{"type", "FeatureCollection"}, {"features", features}, {"frame", "map"}};
 }
@@ -125,8 +117,8 @@ json rooms_graph_json(const rooms::RoomsResult& r, const std::vector<int>& objec
     doors.push_back({{"id", k + 1},
                      {"rooms", {d.a, d.b}},
                      {"width_m", d.width_m},
-                     {"a_m", rooms_xy(d.end0_m)},
-                     {"b_m", rooms_xy(d.end1_m)}});
+                     {"a_m", xy_json(d.end0_m)},
+                     {"b_m", xy_json(d.end1_m)}});
   }
   return {{"frame", "map"},
           {"count", r.rooms.size()},
