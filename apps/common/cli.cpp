@@ -1,10 +1,10 @@
 #include "cli.hpp"
 
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <new>
 
 #include "indoormap/core/errors.hpp"
@@ -129,12 +129,15 @@ PipelineConfig resolve_config(const PipelineCli& cli) {
   return c;
 }
 
-std::function<void(const std::string&, double)> terminal_progress() {
-  if (!::isatty(STDERR_FILENO)) return {};
-  return [](const std::string& file, double fraction) {
-    std::fprintf(stderr, "\r%s: %3d%%%s", file.c_str(), static_cast<int>(fraction * 100.0),
-                 fraction >= 1.0 ? "\n" : "");
-    std::fflush(stderr);
+std::function<void(const std::string&, double)> load_progress(bool quiet) {
+  if (progress_mode(quiet) == ProgressMode::kOff) return {};
+  // One reporter per file (a 3DTK directory is many files), in per mille of the file's bytes.
+  auto current = std::make_shared<std::pair<std::string, ProgressReporter>>(
+      "", ProgressReporter("", "", true));
+  return [current](const std::string& file, double fraction) {
+    if (current->first != file)
+      *current = {file, ProgressReporter("loading " + file + " (per mille)", "", false)};
+    current->second.update(static_cast<std::int64_t>(fraction * 1000.0), 1000);
   };
 }
 

@@ -8,6 +8,7 @@
 #include "config.hpp"
 #include "indoormap/planning/planner.hpp"
 #include "main_guard.hpp"
+#include "progress.hpp"
 
 namespace indoormap::app {
 
@@ -39,7 +40,8 @@ void add_pipeline_options(CLI::App& app, PipelineCli& cli);
 /// Defaults, then the config file, then the command-line overrides; validated.
 PipelineConfig resolve_config(const PipelineCli& cli);
 
-/// Prints "\r<file>: 42%" on stderr when stderr is a terminal (progress of long loads).
-std::function<void(const std::string&, double)> terminal_progress();
+/// The progress of long loads (text files, per file) for cloud_io::LoadOptions::progress, through
+/// ProgressReporter (a bar on a terminal, a line every few seconds otherwise); empty when quiet.
+std::function<void(const std::string&, double)> load_progress(bool quiet);
 
 }  // namespace indoormap::app

@@ -14,6 +14,7 @@
 #include "indoormap/formats/pgm.hpp"
 #include "indoormap/formats/ros_map.hpp"
 #include "indoormap/version.hpp"
+#include "progress.hpp"
 #include "scanner_positions.hpp"
 
 namespace indoormap::app {
@@ -101,8 +102,9 @@ void finish_summary(json& summary, const fs::path& out, std::vector<std::string>
 PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_input_points) {
   PipelineRun run;
   const auto t0 = std::chrono::steady_clock::now();
-  if (!cli.quiet) cfg.load.progress = terminal_progress();
+  cfg.load.progress = load_progress(cli.quiet);
   cloud_io::LoadResult loaded = cloud_io::load_clouds(cli.inputs, cfg.load);
+  cfg.load.progress = nullptr;  // ends the last file's bar line
   run.load_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   run.inputs = loaded.inputs;
@@ -125,7 +127,11 @@ PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_
   for (const auto& in : cli.inputs) names += (names.empty() ? "" : ", ") + in;
   const std::string unit = unit_hint(extent, cfg.load.unit_m);  // empty unless over 1 km wide
   try {
+    const ProgressReporter ghost_bar("ghost filter", "rays", cli.quiet);
+    cfg.map.ghosts.progress = ghost_bar.fn();
     auto maps = layout::make_storey_maps(std::move(loaded.cloud), cfg.map, cfg.storeys, cli.storey);
+    cfg.map.ghosts.progress = nullptr;
+    ghost_bar.finish();
     run.storeys = maps.storeys;
     run.mapped = maps.mapped;
     if (maps.maps.empty()) throw InputError(names, "no storey holds points");

@@ -19,6 +19,7 @@
 #include "laser_outputs.hpp"
 #include "main_guard.hpp"
 #include "output_set.hpp"
+#include "progress.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
@@ -76,11 +77,13 @@ Args parse_args(int argc, char** argv) {
 }
 
 /// One pass over the log: on_scan(scan) for every usable FLASER message; a scan that
-/// laser::validate rejects (a non-finite pose) is counted in skipped. A progress line on stderr
-/// every `every` scans (0: none). Throws InputError on the first bad line.
+/// laser::validate rejects (a non-finite pose) is counted in skipped. Progress (scans of
+/// total_scans, 0: unknown) reported every `every` scans (0: none). Throws InputError on the first
+/// bad line.
 formats::CarmenStats log_pass(const std::string& path, const app::LaserMapConfig& cfg, int every,
-                              const char* what, std::size_t& skipped,
+                              const char* what, std::int64_t total_scans, std::size_t& skipped,
                               const std::function<void(const laser::LaserScan&)>& on_scan) {
+  const app::ProgressReporter bar(std::string("laser-to-map: ") + what, "scans", every <= 0);
   formats::CarmenReader reader(path, cfg.log);
   formats::CarmenScan c;
   laser::LaserScan s;
@@ -96,8 +99,9 @@ formats::CarmenStats log_pass(const std::string& path, const app::LaserMapConfig
     on_scan(s);
     const std::size_t n = reader.stats().scans;
     if (every > 0 && n % static_cast<std::size_t>(every) == 0)
-      std::cerr << "laser-to-map: " << what << ": " << n << " scans (line " << c.line << ")\n";
+      bar.update(static_cast<std::int64_t>(n), total_scans);
   }
+  bar.finish();
   return reader.stats();
 }
 
@@ -109,7 +113,7 @@ app::LaserMapRun map_log(const std::string& path, const app::LaserMapConfig& cfg
   const int every = quiet ? 0 : cfg.progress_every_scans;
   auto t0 = Clock::now();
   auto mapper = laser::make_mapper(cfg.method, cfg.grid, cfg.himm, cfg.log_odds);
-  run.stats = log_pass(path, cfg, every, "mapping", run.scans_skipped, [&](const auto& s) {
+  run.stats = log_pass(path, cfg, every, "mapping", 0, run.scans_skipped, [&](const auto& s) {
     mapper->integrate(s);
     // The path for the picture: a point per cell moved (none while the robot stands still).
     const Eigen::Vector2d p = s.robot_pose_map.position_m();
@@ -126,7 +130,7 @@ app::LaserMapRun map_log(const std::string& path, const app::LaserMapConfig& cfg
   cp.max_range_m = cfg.grid.max_range_m;
   laser::ConsistencyCheck check(run.map.cells, run.map.geometry, cp);
   std::size_t skipped = 0;
-  log_pass(path, cfg, every, "checking", skipped, [&](const auto& s) { check.add(s); });
+  log_pass(path, cfg, every, "checking", static_cast<std::int64_t>(run.stats.scans), skipped, [&](const auto& s) { check.add(s); });
   run.check = check.result();
   run.check_ms = ms_since(t0);
   return run;

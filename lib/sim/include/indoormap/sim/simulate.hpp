@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "indoormap/core/progress.hpp"
 #include "indoormap/sim/scene.hpp"
 
 namespace indoormap::sim {
@@ -20,6 +21,8 @@ struct SimOptions {
   double sector_deg = 0.0;
   /// Refuse scenes that would cast more rays than this (BudgetError), before allocating.
   std::uint64_t max_rays = 400'000'000;
+  /// Rays cast of ray_count(scene), about every 100,000 rays (empty: none).
+  ProgressFn progress;
 };
 
 /// One scan: points [begin, end) of SimResult::points, from one scanner position and sector.
