@@ -1,6 +1,5 @@
 #include "cli.hpp"
 
-
 #include <cmath>
 #include <cstdio>
 #include <iostream>

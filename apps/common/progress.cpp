@@ -88,8 +88,8 @@ std::string progress_text(const std::string& label, const std::string& unit, Pro
   std::string s = label + ": ";
   if (known)
     s += std::string(pct + (pct[0] == ' ' ? (pct[1] == ' ' ? 2 : 1) : 0)) + " (" +
-         human_count(static_cast<double>(done)) + " of " +
-         human_count(static_cast<double>(total)) + " " + unit;
+         human_count(static_cast<double>(done)) + " of " + human_count(static_cast<double>(total)) +
+         " " + unit;
   else
     s += human_count(static_cast<double>(done)) + " " + unit + " (";
   if (!rate_s.empty()) s += (known ? ", " : "") + rate_s;

@@ -19,7 +19,7 @@ struct LaserMapConfig {
   laser::LogOddsParams log_odds;
   laser::ConsistencyParams consistency;
   formats::CarmenReadOptions log;
-  /// A progress line on stderr every this many scans (0: none; -q silences it too).
+  /// Progress on stderr every this many scans (0: none; -q silences it too; docs/progress.md).
   int progress_every_scans = 1000;
 };
 

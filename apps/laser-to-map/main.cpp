@@ -130,7 +130,8 @@ app::LaserMapRun map_log(const std::string& path, const app::LaserMapConfig& cfg
   cp.max_range_m = cfg.grid.max_range_m;
   laser::ConsistencyCheck check(run.map.cells, run.map.geometry, cp);
   std::size_t skipped = 0;
-  log_pass(path, cfg, every, "checking", static_cast<std::int64_t>(run.stats.scans), skipped, [&](const auto& s) { check.add(s); });
+  log_pass(path, cfg, every, "checking", static_cast<std::int64_t>(run.stats.scans), skipped,
+           [&](const auto& s) { check.add(s); });
   run.check = check.result();
   run.check_ms = ms_since(t0);
   return run;

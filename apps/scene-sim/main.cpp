@@ -276,8 +276,8 @@ int run(int argc, char** argv) {
   std::int64_t all_rays = 0;
   for (const auto& st : building.storeys) {
     const sim::Scene& scene = st.scene;
-    const std::uint64_t rays = config.mobile ? sim::mobile_ray_count(scene, config.mobile_params)
-                                             : sim::ray_count(scene);
+    const std::uint64_t rays =
+        config.mobile ? sim::mobile_ray_count(scene, config.mobile_params) : sim::ray_count(scene);
     all_rays += static_cast<std::int64_t>(rays);
     if (!a.quiet)
       std::fprintf(

@@ -56,10 +56,10 @@ class Rng {
  public:
   explicit Rng(std::uint64_t seed);
   std::uint64_t next();
-  double uniform();                         ///< [0, 1)
+  double uniform();  ///< [0, 1)
   double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-  int uniform_int(int lo, int hi);          ///< [lo, hi] inclusive
-  double normal();                          ///< standard normal (Marsaglia polar method)
+  int uniform_int(int lo, int hi);  ///< [lo, hi] inclusive
+  double normal();                  ///< standard normal (Marsaglia polar method)
 
  private:
   std::uint64_t s_[4];
