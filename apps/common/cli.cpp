@@ -41,6 +41,9 @@ void add_pipeline_options(CLI::App& app, PipelineCli& cli) {
       ->check(CLI::NonNegativeNumber);
   app.add_option("--cell-m", cli.cell_m, "Voxel / map cell size in metres (voxel.cell_m)");
   app.add_flag("--no-level", cli.no_level, "Do not level the cloud (level.enabled: false)");
+  app.add_flag("--align-walls", cli.align_walls,
+               "Turn the map frame about the vertical so the walls run along x and y "
+               "(align_walls.enabled: true); summary.json and map.yaml say how to go back");
   app.add_option("--start", cli.start,
                  "Route start X,Y[,DEG] in the map frame (with --goal: route outputs)");
   app.add_option("--goal", cli.goal, "Route goal X,Y[,DEG] in the map frame (with --start)");
@@ -123,6 +126,7 @@ PipelineConfig resolve_config(const PipelineCli& cli) {
   }
   if (cli.cell_m != 0.0) c.map.voxel.cell_m = cli.cell_m;
   if (cli.no_level) c.map.level.enabled = false;
+  if (cli.align_walls) c.map.align_walls.enabled = true;
   if (cli.start.empty() != cli.goal.empty()) throw UsageError("--start and --goal go together");
   validate(c);
   return c;

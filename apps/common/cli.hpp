@@ -26,9 +26,10 @@ struct PipelineCli {
   int storey = -1;                    ///< --storey K: only that storey (-1: every storey)
   double cell_m = 0.0;                ///< 0: from config
   bool no_level = false;
-  std::string start;   ///< "X,Y[,DEG]" map frame: plan a route (with goal)
-  std::string goal;    ///< "X,Y[,DEG]"
-  bool quiet = false;  ///< -q: no progress or run report on stderr (warnings still shown)
+  bool align_walls = false;  ///< --align-walls: align_walls.enabled
+  std::string start;         ///< "X,Y[,DEG]" map frame: plan a route (with goal)
+  std::string goal;          ///< "X,Y[,DEG]"
+  bool quiet = false;        ///< -q: no progress or run report on stderr (warnings still shown)
 };
 
 /// Parses "X,Y" or "X,Y,DEG" (metres, degrees counter-clockwise from +x). Throws UsageError

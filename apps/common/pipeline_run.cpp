@@ -46,6 +46,30 @@ std::string fmt_m(double v) {
   return b;
 }
 
+json matrix_json(const Eigen::Matrix3d& m) {
+  json rows = json::array();
+  for (int r = 0; r < 3; ++r) rows.push_back({m(r, 0), m(r, 1), m(r, 2)});
+  return rows;
+}
+
+// map.yaml's note on the frame when the walls were aligned: how to go back to the input frame.
+std::vector<std::string> frame_comments(const cloud::LevelResult& lv) {
+  if (!lv.align.applied) return {};
+  const Eigen::Matrix3d& r = lv.map_from_input;
+  char yaw[160], row[3][96];
+  std::snprintf(yaw, sizeof yaw,
+                "frame: levelled, then turned %.4f deg about +z (--align-walls) so the walls run "
+                "along x and y",
+                lv.align.yaw_deg);
+  for (int i = 0; i < 3; ++i)
+    std::snprintf(row[i], sizeof row[i], "%s[%.9f, %.9f, %.9f]%s", i == 0 ? "[" : " ", r(i, 0),
+                  r(i, 1), r(i, 2), i == 2 ? "]" : ",");
+  return {yaw,
+          "map = R * input, input = R^T * map (metres, about the input frame's origin); R = "
+          "summary.json levelling.map_from_input:",
+          std::string("R = ") + row[0], std::string("    ") + row[1], std::string("    ") + row[2]};
+}
+
 double ms_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
 }
@@ -186,7 +210,8 @@ std::vector<std::string> write_map_outputs(const fs::path& out, const PipelineRu
   for (const auto& s : m.cloud_map.scanners) markers.emplace_back(s.x(), s.y());
   if (m.layout.seeds_estimated)
     for (const auto& s : m.layout.seeds) markers.push_back(m.geometry.center_of(s));
-  formats::write_ros_map(out, "map", m.nav.map, m.geometry);  // the robot's map, not M_r
+  formats::write_ros_map(out, "map", m.nav.map, m.geometry,  // the robot's map, not M_r
+                         frame_comments(m.level));
   formats::write_layout_pgm(out / "layout.pgm", m.layout.layout);
   draw::RenderOptions ro;
   ro.title = "room layout M_r  (" + std::to_string(m.geometry.width()) + " x " +
@@ -223,10 +248,8 @@ json summary_json(const std::string& program, const PipelineRun& run, const Pipe
     layers.push_back({{"layer", z},
                       {"z_m", m.voxels.layer_center_m(static_cast<std::int64_t>(z))},
                       {"occupied_cells", m.layers.occupied_per_layer[z]}});
-  json rot = json::array();
-  for (int r = 0; r < 3; ++r)
-    rot.push_back(
-        {m.level.map_from_input(r, 0), m.level.map_from_input(r, 1), m.level.map_from_input(r, 2)});
+  const json rot = matrix_json(m.level.map_from_input);
+  const auto& al = m.level.align;
   json scanners = json::array();
   for (const auto& s : m.cloud_map.scanners) scanners.push_back(vec(s));
   json seeds = json::array();
@@ -264,6 +287,16 @@ json summary_json(const std::string& program, const PipelineRun& run, const Pipe
         {"floor_plane_input", plane_json(m.level.floor)},
         {"ceiling_plane_input", plane_json(m.level.ceiling)},
         {"note", m.level.note}}},
+      {"align_walls",
+       {{"enabled", cfg.map.align_walls.enabled},
+        {"applied", al.applied},
+        {"yaw_deg", al.yaw_deg},
+        {"wall_direction_levelled_deg", al.direction_deg},
+        {"confidence", al.confidence},
+        {"wall_points", al.wall_points},
+        {"note", al.note},
+        {"map_from_input", rot},
+        {"input_from_map", matrix_json(m.level.map_from_input.transpose())}}},
       {"grid",
        {{"resolution_m", m.voxels.cell_m},
         {"origin_m", vec(m.voxels.origin_m)},

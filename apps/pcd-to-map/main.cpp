@@ -48,6 +48,8 @@ int run(int argc, char** argv) {
       "  pcd-to-map clouds/office/cloud.pcd --start 1,1,0 --goal 4,3 -o out   # adds a route\n"
       "  pcd-to-map building.pcd --trajectory trajectory.txt -o out   # mobile scan, its path\n"
       "  pcd-to-map building.pcd --storey 1 -o out/first   # the second storey only\n"
+      "  pcd-to-map ../shared/data/jacobs-thermocolorlab --align-walls -o out/aligned   # walls "
+      "along x / y\n"
       "Exit codes: 0 done, 2 bad usage or bad input, 3 no route (with --start/--goal), 1 other "
       "failure.");
   app::PipelineCli cli;
