@@ -1,5 +1,6 @@
 #include "indoormap/formats/ros_map.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -56,11 +57,20 @@ void write_map_yaml(const fs::path& path, const RosMapMeta& meta, MapYamlStyle s
       << "occupied_thresh: " << shortest(meta.occupied_thresh) << "\n"
       << "free_thresh: " << shortest(meta.free_thresh) << "\n";
   }
+  for (const auto& c : meta.comments) {
+    // One "# " line per line of the comment: a newline inside would start a YAML key.
+    for (std::size_t b = 0;;) {
+      const std::size_t e = std::min(c.find('\n', b), c.size());
+      y << "# " << c.substr(b, e - b) << "\n";
+      if (e + 1 >= c.size()) break;
+      b = e + 1;
+    }
+  }
   write_file_atomic(path, y.str());
 }
 
 void write_ros_map(const fs::path& dir, const std::string& stem, const Grid<Cell>& layout,
-                   const GridGeometry& geo) {
+                   const GridGeometry& geo, const std::vector<std::string>& comments) {
   Grid<std::uint8_t> img(layout.width, layout.height);
   for (std::size_t i = 0; i < img.size(); ++i) {
     switch (layout.data[i]) {
@@ -77,7 +87,9 @@ void write_ros_map(const fs::path& dir, const std::string& stem, const Grid<Cell
     }
   }
   write_pgm(dir / (stem + ".pgm"), img);
-  write_map_yaml(dir / (stem + ".yaml"), map_meta(stem + ".pgm", geo), MapYamlStyle::kRosMap);
+  RosMapMeta meta = map_meta(stem + ".pgm", geo);
+  meta.comments = comments;
+  write_map_yaml(dir / (stem + ".yaml"), meta, MapYamlStyle::kRosMap);
 }
 
 namespace {
