@@ -18,7 +18,8 @@ constexpr int kMaxScanNumber = 1'000'000;
 void add_pipeline_options(CLI::App& app, PipelineCli& cli) {
   app.add_option(
       "inputs", cli.inputs,
-      "Point clouds: .pcd, .ply, .xyz/.txt, or a 3DTK scan directory (several are merged)");
+      "Point clouds: .pcd, .ply, .xyz/.txt/.csv, .las (LAS 1.2-1.4), or a 3DTK scan directory "
+      "(several are merged)");
   app.add_option("-o,--out", cli.out_dir, "Output directory (created if missing)");
   app.add_option("-c,--config", cli.config_file, "YAML parameters (see config/default.yaml)");
   app.add_flag("--print-config", cli.print_config,

@@ -132,6 +132,7 @@ PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_
   run.load_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   run.inputs = loaded.inputs;
+  run.source_offset = loaded.source_offset;
   std::vector<std::string> input_warnings;
   for (const auto& in : loaded.inputs)
     input_warnings.insert(input_warnings.end(), in.warnings.begin(), in.warnings.end());
@@ -204,14 +205,17 @@ PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_
   return run;
 }
 
-std::vector<std::string> write_map_outputs(const fs::path& out, const PipelineRun& run) {
+std::vector<std::string> write_map_outputs(const fs::path& out, const PipelineRun& run,
+                                           const PipelineConfig& cfg) {
   const auto& m = run.map;
   std::vector<Eigen::Vector2d> markers;
   for (const auto& s : m.cloud_map.scanners) markers.emplace_back(s.x(), s.y());
   if (m.layout.seeds_estimated)
     for (const auto& s : m.layout.seeds) markers.push_back(m.geometry.center_of(s));
+  std::vector<std::string> comments = source_frame_comments(run, cfg);
+  for (auto& c : frame_comments(m.level)) comments.push_back(std::move(c));
   formats::write_ros_map(out, "map", m.nav.map, m.geometry,  // the robot's map, not M_r
-                         frame_comments(m.level));
+                         comments);
   formats::write_layout_pgm(out / "layout.pgm", m.layout.layout);
   draw::RenderOptions ro;
   ro.title = "room layout M_r  (" + std::to_string(m.geometry.width()) + " x " +
@@ -236,12 +240,14 @@ json summary_json(const std::string& program, const PipelineRun& run, const Pipe
   for (const auto& in : run.inputs) {
     read += in.points_read;
     dropped += in.points_dropped;
-    inputs.push_back({{"path", in.path},
-                      {"format", in.format},
-                      {"points_read", in.points_read},
-                      {"points_dropped", in.points_dropped},
-                      {"scans", in.scans},
-                      {"scanner_known", in.scanner_known}});
+    inputs.push_back(
+        {{"path", in.path},
+         {"format", in.format},
+         {"points_read", in.points_read},
+         {"points_dropped", in.points_dropped},
+         {"scans", in.scans},
+         {"scanner_known", in.scanner_known},
+         {"source_offset", in.source_offset ? vec(*in.source_offset) : json(nullptr)}});
   }
   json layers = json::array();
   for (std::size_t z = 0; z < m.layers.occupied_per_layer.size(); ++z)
@@ -297,6 +303,7 @@ json summary_json(const std::string& program, const PipelineRun& run, const Pipe
         {"note", al.note},
         {"map_from_input", rot},
         {"input_from_map", matrix_json(m.level.map_from_input.transpose())}}},
+      {"source_frame", source_frame_json(run, cfg)},
       {"grid",
        {{"resolution_m", m.voxels.cell_m},
         {"origin_m", vec(m.voxels.origin_m)},
@@ -355,6 +362,55 @@ json storeys_json(const PipelineRun& run) {
                    {"dir", run.storeys.size() > 1 ? "storey_" + std::to_string(k) : "."}});
   }
   return out;
+}
+
+namespace {
+
+constexpr const char* kToSource =
+    "source = source_frame.offset + S(transpose(map_from_input) * p_map) / unit_m, S undoing "
+    "the up-axis swap (up_axis z: S = identity; up_axis y: S(x, y, z) = (x, z, -y))";
+
+std::string fmt_offset(const Eigen::Vector3d& o) {
+  char b[128];
+  std::snprintf(b, sizeof b, "[%.3f, %.3f, %.3f]", o.x(), o.y(), o.z());
+  return b;
+}
+
+}  // namespace
+
+json source_frame_json(const PipelineRun& run, const PipelineConfig& cfg) {
+  if (!run.source_offset) return nullptr;
+  json rot = json::array();
+  const auto& r = run.map.level.map_from_input;
+  for (int i = 0; i < 3; ++i) rot.push_back({r(i, 0), r(i, 1), r(i, 2)});
+  return {{"offset", vec(*run.source_offset)},
+          {"unit_m", cfg.load.unit_m},
+          {"up_axis", cfg.load.up_axis == cloud_io::UpAxis::kY ? "y" : "z"},
+          {"map_from_input", rot},
+          {"to_source", kToSource},
+          {"note",
+           "LAS coordinates were moved to a local frame on reading (source minus offset, in "
+           "double precision, before the conversion to float); the map frame is that local "
+           "frame, scaled by unit_m, up-axis mapped and levelled (levelling.map_from_input)"}};
+}
+
+std::vector<std::string> source_frame_comments(const PipelineRun& run, const PipelineConfig& cfg) {
+  if (!run.source_offset) return {};
+  const auto& r = run.map.level.map_from_input;
+  char rot[256];
+  std::snprintf(rot, sizeof rot, "[[%.9f, %.9f, %.9f], [%.9f, %.9f, %.9f], [%.9f, %.9f, %.9f]]",
+                r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1), r(1, 2), r(2, 0), r(2, 1), r(2, 2));
+  char unit[64];
+  std::snprintf(unit, sizeof unit, "%g", cfg.load.unit_m);
+  return {
+      "map frame = map_from_input * ((source frame - source_offset) * unit_m), up-axis "
+      "mapped (the LAS input was moved to a local frame on reading)",
+      "source_offset: " + fmt_offset(*run.source_offset) +
+          "  (source units; summary.json source_frame.offset)",
+      std::string("unit_m: ") + unit +
+          "  up_axis: " + (cfg.load.up_axis == cloud_io::UpAxis::kY ? "y" : "z"),
+      std::string("map_from_input: ") + rot + "  (summary.json levelling.map_from_input)",
+      std::string("back: ") + kToSource};
 }
 
 void report(const std::string& program, const PipelineRun& run, bool quiet) {

@@ -54,7 +54,7 @@ int run(int argc, char** argv) {
   const auto t_write = std::chrono::steady_clock::now();
   app::OutputSet set(out, "furniture-extract");  // all or nothing: docs/furniture-extract.md
   const fs::path& dir = set.dir();
-  std::vector<std::string> outputs = app::write_map_outputs(dir, run);
+  std::vector<std::string> outputs = app::write_map_outputs(dir, run, cfg);
   app::ObjectOutputs what;
   what.input_points = &run.input_points;
   what.crop_margin_m = cfg.objects.crop_margin_m;

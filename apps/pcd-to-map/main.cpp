@@ -91,7 +91,7 @@ int run(int argc, char** argv) {
     if (!sub.empty()) fs::create_directories(dir);
     run.map = std::move(w.map);
     const auto& m = run.map;
-    std::vector<std::string> outputs = app::write_map_outputs(dir, run);
+    std::vector<std::string> outputs = app::write_map_outputs(dir, run, cfg);
     app::ObjectOutputs what;
     what.csv = what.picture = false;
     what.room_ids = &w.rooms.object_rooms;
@@ -130,6 +130,7 @@ int run(int argc, char** argv) {
     json summary = {{"program", "pcd-to-map"},
                     {"version", kVersion},
                     {"storeys", app::storeys_json(run)},
+                    {"source_frame", app::source_frame_json(run, cfg)},
                     {"parameters", app::to_json(cfg)}};
     app::finish_summary(summary, set.dir(), top_outputs, t_write, setup->start);
   }
