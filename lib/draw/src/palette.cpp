@@ -14,15 +14,16 @@ constexpr std::array<std::array<Bgr, 4>, 2> kCellBgr = {{
 }};
 
 // Indexed by ObjectKind: furniture, hanging, lamp, pillar, column, installation. Chosen for a
-// large smallest pairwise CIEDE2000 distance (35.6) with every colour still 28 or more from the
-// orange, white and grey cells below it; furniture keeps its purple.
+// large smallest pairwise CIEDE2000 distance (33.7, furniture - lamp) with every colour still 28
+// or more from the orange, white and grey cells below it; furniture keeps its purple; lamp is
+// pink, not green, to stay apart from rooms.png's green doors (90 apart).
 constexpr std::array<std::array<std::uint8_t, 3>, 6> kKindRgb = {{
-    {150, 0, 160},   // furniture: purple
-    {15, 135, 240},  // hanging: blue
-    {30, 230, 0},    // lamp: green
-    {210, 0, 0},     // pillar: red
-    {20, 20, 20},    // column: near-black
-    {135, 120, 15},  // installation: olive
+    {150, 0, 160},    // furniture: purple
+    {15, 135, 240},   // hanging: blue
+    {255, 120, 255},  // lamp: pink
+    {210, 0, 0},      // pillar: red
+    {20, 20, 20},     // column: near-black
+    {135, 120, 15},   // installation: olive
 }};
 
 }  // namespace

@@ -19,7 +19,7 @@ enum class CellColours {
 cv::Scalar cell_colour(Cell c, CellColours set = CellColours::kMap);
 
 /// RGB colour of an object kind, the same in every picture that draws objects by kind. The six
-/// differ pairwise by at least 30 CIEDE2000 units (purple, blue, green, red, near-black, olive),
+/// differ pairwise by at least 30 CIEDE2000 units (purple, blue, pink, red, near-black, olive),
 /// and each by at least 25 from the furniture, free and unknown cells it is drawn over
 /// (tests/test_draw.cpp).
 std::array<std::uint8_t, 3> kind_rgb(ObjectKind kind);
