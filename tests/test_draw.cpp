@@ -206,6 +206,17 @@ TEST(KindPalette, KindsStandOutFromTheCellsBelowThem) {
       EXPECT_GE(delta_e2000(to_lab(kind_rgb(k)), to_lab(rgb)), 25.0)
           << to_string(k) << " on " << to_string(c);
     }
+  // Ids are drawn in their kind's colour on a white halo: WCAG 2's contrast ratio with white,
+  // (1.05) / (Y + 0.05) for relative luminance Y, at least 3 (its minimum for large text).
+  const auto linear = [](double v) {
+    v /= 255.0;
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+  };
+  for (const ObjectKind k : kObjectKinds) {
+    const auto c = kind_rgb(k);
+    const double y = 0.2126 * linear(c[0]) + 0.7152 * linear(c[1]) + 0.0722 * linear(c[2]);
+    EXPECT_GE(1.05 / (y + 0.05), 3.0) << to_string(k);
+  }
   const cv::Scalar bgr = kind_colour(ObjectKind::kLamp);
   const auto rgb = kind_rgb(ObjectKind::kLamp);
   EXPECT_EQ(bgr, cv::Scalar(rgb[2], rgb[1], rgb[0]));

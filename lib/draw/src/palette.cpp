@@ -14,16 +14,17 @@ constexpr std::array<std::array<Bgr, 4>, 2> kCellBgr = {{
 }};
 
 // Indexed by ObjectKind: furniture, hanging, lamp, pillar, column, installation. Chosen for a
-// large smallest pairwise CIEDE2000 distance (33.7, furniture - lamp) with every colour still 28
-// or more from the orange, white and grey cells below it; furniture keeps its purple; lamp is
-// pink, not green, to stay apart from rooms.png's green doors (90 apart).
+// large smallest pairwise CIEDE2000 distance (32.0, lamp - column) with every colour 27 or more
+// from the orange, white and grey cells below it and 30 or more from rooms.png's green doors,
+// and dark enough for its ids to read on their white halo (contrast with white 3.6 or more,
+// WCAG's 3 for large text); furniture keeps its purple.
 constexpr std::array<std::array<std::uint8_t, 3>, 6> kKindRgb = {{
-    {150, 0, 160},    // furniture: purple
-    {15, 135, 240},   // hanging: blue
-    {255, 120, 255},  // lamp: pink
-    {210, 0, 0},      // pillar: red
-    {20, 20, 20},     // column: near-black
-    {135, 120, 15},   // installation: olive
+    {150, 0, 160},   // furniture: purple
+    {15, 135, 240},  // hanging: blue
+    {0, 105, 90},    // lamp: dark teal
+    {210, 0, 0},     // pillar: red
+    {20, 20, 20},    // column: near-black
+    {135, 105, 15},  // installation: olive
 }};
 
 }  // namespace

@@ -19,9 +19,9 @@ enum class CellColours {
 cv::Scalar cell_colour(Cell c, CellColours set = CellColours::kMap);
 
 /// RGB colour of an object kind, the same in every picture that draws objects by kind. The six
-/// differ pairwise by at least 30 CIEDE2000 units (purple, blue, pink, red, near-black, olive),
-/// and each by at least 25 from the furniture, free and unknown cells it is drawn over
-/// (tests/test_draw.cpp).
+/// (purple, blue, dark teal, red, near-black, olive) differ pairwise by at least 30 CIEDE2000
+/// units, each by at least 25 from the furniture, free and unknown cells it is drawn over, and
+/// each has a contrast of at least 3 with white (tests/test_draw.cpp).
 std::array<std::uint8_t, 3> kind_rgb(ObjectKind kind);
 
 /// kind_rgb as an OpenCV (BGR) colour.
