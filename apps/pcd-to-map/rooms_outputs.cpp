@@ -38,14 +38,16 @@ json write_rooms_outputs(const fs::path& out, const layout::MapResult& m,
                          const objects::ObjectsResult& objs, const StoreyRooms& r) {
   std::vector<int> ids;
   std::vector<Polygon> footprints;
+  std::vector<ObjectKind> kinds;
   for (const auto& o : objs.objects) {
     ids.push_back(o.id);
     footprints.push_back(o.footprint_m);
+    kinds.push_back(o.kind);
   }
   formats::write_rooms_geojson(out / "rooms.geojson", r.rooms);
   formats::write_json(out / "rooms.json", formats::rooms_graph_json(r.rooms, ids, r.object_rooms));
   draw::write_rooms_png(out / "rooms.png", r.rooms, m.nav.map, footprints,
-                        "rooms of the navigation map");
+                        "rooms of the navigation map", kinds);
   double area = 0.0;
   for (const auto& room : r.rooms.rooms) area += room.area_m2;
   return {{"count", r.rooms.rooms.size()},

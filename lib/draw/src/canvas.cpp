@@ -80,6 +80,43 @@ void Legend::scale_bar(int bar) {
               cv::LINE_AA);
 }
 
+int LegendTable::blocks(int width_px) const {
+  int block_w = 16;
+  for (const int w : col_px) block_w += w;
+  return std::max(1, (width_px - 6) / block_w);
+}
+
+int LegendTable::height_px(int width_px) const {
+  if (rows.empty()) return 0;
+  const int n = static_cast<int>(rows.size()), b = blocks(width_px);
+  return row_px * (2 + (n + b - 1) / b) + 6;
+}
+
+void LegendTable::draw(cv::Mat& img, int y0_px) const {
+  if (rows.empty()) return;
+  const int n = static_cast<int>(rows.size()), b = blocks(img.cols);
+  const int per_block = (n + b - 1) / b;
+  const auto text = [&](const std::string& t, int x, int y) {
+    cv::putText(img, t, {x, y}, kFont, 0.42, {0, 0, 0}, 1, cv::LINE_AA);
+  };
+  text(title, 6, y0_px + row_px - 5);
+  int block_w = 16;
+  for (const int w : col_px) block_w += w;
+  for (int k = 0; k < b && k * per_block < n; ++k) {
+    const int x0 = 6 + k * block_w;
+    for (int r = -1; r < per_block && k * per_block + r < n; ++r) {
+      const auto& cells = r < 0 ? header : rows[static_cast<std::size_t>(k * per_block + r)];
+      const int y = y0_px + row_px * (r + 3) - 5;
+      int x = x0;
+      for (std::size_t c = 0; c < cells.size() && c < col_px.size(); ++c) {
+        text(cells[c], x, y);
+        x += col_px[c];
+      }
+      if (r < 0) cv::line(img, {x0, y + 4}, {x - 8, y + 4}, {0, 0, 0}, 1);
+    }
+  }
+}
+
 void write_png(const std::filesystem::path& path, const cv::Mat& img,
                const std::vector<int>& params) {
   std::vector<unsigned char> png;

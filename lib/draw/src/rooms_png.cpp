@@ -1,6 +1,7 @@
 #include "indoormap/draw/rooms_png.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
@@ -12,7 +13,6 @@ namespace {
 
 const cv::Scalar kRoomsDoor(40, 170, 40);    // BGR: green
 const cv::Scalar kRoomsOutline(90, 40, 40);  // dark blue
-const cv::Scalar kRoomsObject(0, 120, 230);  // orange
 
 /// A pastel tint per room id (golden-angle hues).
 cv::Vec3b rooms_tint(int id) {
@@ -32,7 +32,7 @@ std::vector<cv::Point> rooms_px(const PixelFrame& f, const Polygon& poly) {
 
 void write_rooms_png(const std::filesystem::path& path, const rooms::RoomsResult& r,
                      const Grid<Cell>& nav, const std::vector<Polygon>& objects,
-                     const std::string& title) {
+                     const std::string& title, const std::vector<ObjectKind>& kinds) {
   const GridGeometry& g = r.geometry;
   const int w = std::max(nav.width, 1), h = std::max(nav.height, 1);
   const int k = pixels_per_cell(w, h, 640, 2400);
@@ -50,9 +50,13 @@ void write_rooms_png(const std::filesystem::path& path, const rooms::RoomsResult
   cv::resize(base, scaled, cv::Size(w * k, h * k), 0, 0, cv::INTER_NEAREST);
   scaled.copyTo(img(cv::Rect(0, title_h, w * k, h * k)));
   const PixelFrame frame{g, k, title_h, h};
-  for (const auto& o : objects) {
-    const std::vector<std::vector<cv::Point>> poly{rooms_px(frame, o)};
-    cv::polylines(img, poly, true, kRoomsObject, std::max(1, k / 2), cv::LINE_AA);
+  const bool by_kind = kinds.size() == objects.size();
+  std::array<bool, kObjectKinds.size()> used{};
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const ObjectKind kind = by_kind ? kinds[i] : ObjectKind::kFurniture;
+    used[static_cast<std::size_t>(kind)] = true;
+    const std::vector<std::vector<cv::Point>> poly{rooms_px(frame, objects[i])};
+    cv::polylines(img, poly, true, kind_colour(kind), std::max(1, k / 2), cv::LINE_AA);
   }
   for (const auto& room : r.rooms) {
     if (room.polygon_m.size() < 3) continue;
@@ -80,7 +84,9 @@ void write_rooms_png(const std::filesystem::path& path, const rooms::RoomsResult
     cv::rectangle(img, rc, kRoomsOutline);
   });
   legend.stroke(kRoomsDoor, 3, "door");
-  legend.stroke(kRoomsObject, 2, "object");
+  for (const ObjectKind kind : kObjectKinds)
+    if (used[static_cast<std::size_t>(kind)] || (objects.empty() && kind == ObjectKind::kFurniture))
+      legend.stroke(kind_colour(kind), 2, std::string(to_string(kind)));
   legend.swatch(cell_colour(Cell::kWall), "occupied");
   legend.swatch(cell_colour(Cell::kUnknown), "unknown");
   legend.scale_bar(static_cast<int>(std::lround(k / g.cell_m())));

@@ -65,11 +65,32 @@ class Legend {
   void stroke(const cv::Scalar& colour, int thickness_px, const std::string& label);
   /// A 1 m scale bar of bar_px pixels with its label "1 m", when bar_px > 4.
   void scale_bar(int bar_px);
+  /// The first pixel row below the entries drawn so far (their row's top + row_px).
+  int bottom_px() const { return y0_ + style_.row_px; }
 
  private:
   cv::Mat& img_;
   LegendStyle style_;
   int x_ = 6, y0_;
+};
+
+/// A table below a legend (objects.png: the objects whose label found no place on the map): a
+/// title line, a header and rows of text cells, the rows in blocks side by side when there are
+/// many.
+struct LegendTable {
+  std::string title;
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+  std::vector<int> col_px;  ///< width of each column
+  int row_px = 18;
+
+  /// The height the table takes in an image width_px wide; 0 without rows.
+  int height_px(int width_px) const;
+  /// Draws it with its top at y0_px (nothing without rows).
+  void draw(cv::Mat& img, int y0_px) const;
+
+ private:
+  int blocks(int width_px) const;
 };
 
 /// Encodes img as PNG and writes it atomically; params go to cv::imencode (e.g.
