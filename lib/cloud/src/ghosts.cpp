@@ -47,11 +47,17 @@ GhostResult remove_ghost_voxels_by_origin(VoxelGrid& g, const std::vector<RaySou
       1, (total + params.max_rays - 1) / std::max<std::size_t>(params.max_rays, 1));
   const double skip = g.to_cells(params.end_skip_m);
   const std::uint16_t* counts = g.counts.data();
+  std::int64_t to_trace = 0;
+  for (const auto& src : sources)
+    if (src.scanner.allFinite())
+      to_trace += static_cast<std::int64_t>((src.points.size() + stride - 1) / stride);
+  ProgressTicker ticker(params.progress, to_trace, 16384);
   for (const auto& src : sources) {
     if (!src.scanner.allFinite()) continue;
     const auto& points = src.points;
     const Eigen::Vector3d s = g.to_voxel_coords(src.scanner);  // voxel units
     for (std::size_t i = 0; i < points.size(); i += stride) {
+      ticker.tick();
       const Eigen::Vector3d e = g.to_voxel_coords(points[i].cast<double>());
       if (!e.allFinite()) continue;
       const double end_layer = std::floor(e.z());
@@ -112,6 +118,7 @@ GhostResult remove_ghost_voxels_by_origin(VoxelGrid& g, const std::vector<RaySou
       }
     }
   }
+  ticker.finish();
   const double scale = static_cast<double>(stride);
   for (std::size_t i = 0; i < g.counts.size(); ++i) {
     const std::uint16_t c = g.counts[i];

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "indoormap/cloud/voxel.hpp"
+#include "indoormap/core/progress.hpp"
 
 namespace indoormap::cloud {
 
@@ -26,6 +27,8 @@ struct GhostParams {
   int min_layer_offset = 4;
   double end_skip_m = 0.1;         ///< the last stretch of every ray (its own surface) counts not
   std::size_t max_rays = 500'000;  ///< at most this many rays are traced (every k-th point)
+  /// Rays traced of the rays to trace, every 16384 rays (empty: none). Not a config key.
+  ProgressFn progress;
 };
 
 /// Throws UsageError naming the key (ghosts.min_passes, ...) for a parameter out of its range.
