@@ -436,9 +436,13 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(ReportHtml, Base64MatchesRfc4648Vectors) {
   // RFC 4648, section 10.
-  const std::pair<const char*, const char*> vectors[] = {
-      {"", ""},         {"f", "Zg=="},         {"fo", "Zm8="},        {"foo", "Zm9v"},
-      {"foob", "Zm9vYg=="}, {"fooba", "Zm9vYmE="}, {"foobar", "Zm9vYmFy"}};
+  const std::pair<const char*, const char*> vectors[] = {{"", ""},
+                                                         {"f", "Zg=="},
+                                                         {"fo", "Zm8="},
+                                                         {"foo", "Zm9v"},
+                                                         {"foob", "Zm9vYg=="},
+                                                         {"fooba", "Zm9vYmE="},
+                                                         {"foobar", "Zm9vYmFy"}};
   for (const auto& [in, out] : vectors) EXPECT_EQ(formats::base64_encode(in), out) << in;
   EXPECT_EQ(formats::base64_encode(std::string("\x00\xff\xfe", 3)), "AP/+");
 }
@@ -450,7 +454,13 @@ TEST(ReportHtml, EscapesEveryTextAndAttribute) {
   c.warnings = {"wall & door <unclosed>"};
   c.sections.push_back({"Results", {{"k<1>", "v\"2\"", "/a\"b"}}, false});
   c.files = {{"x&y.json", "it's <data>"}};
+  c.tables.push_back(
+      {"Input <files>", {"file", "SHA-256"}, {{{"", "a&b.pcd", ""}, {"", "ff", "/i"}}}});
   const std::string page = formats::report_html(c);
+  EXPECT_NE(page.find("<h3>Input &lt;files&gt;</h3>"), std::string::npos);
+  EXPECT_NE(
+      page.find("<tr><td class=\"v\">a&amp;b.pcd</td><td class=\"v\" data-key=\"/i\">ff</td></tr>"),
+      std::string::npos);
   EXPECT_EQ(page.find("<script>alert"), std::string::npos);
   EXPECT_NE(page.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
   EXPECT_NE(page.find("wall &amp; door &lt;unclosed&gt;"), std::string::npos);

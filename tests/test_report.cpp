@@ -2,8 +2,10 @@
 // (report.html's figures equal summary.json's; pictures embedded; output lines).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "indoormap/core/errors.hpp"
 #include "indoormap/formats/report_html.hpp"
 #include "provenance.hpp"
 #include "report.hpp"
@@ -86,6 +88,10 @@ const formats::ReportFigure* figure(const formats::ReportContent& c, const std::
   for (const auto& s : c.sections)
     for (const auto& f : s.figures)
       if (f.key == pointer) return &f;
+  for (const auto& t : c.tables)
+    for (const auto& row : t.rows)
+      for (const auto& f : row)
+        if (f.key == pointer) return &f;
   for (const auto& f : c.timings)
     if (f.key == pointer) return &f;
   return nullptr;
@@ -129,15 +135,21 @@ TEST(Report, FiguresAreSummaryValuesKeyedByTheirPointer) {
   EXPECT_EQ(figure(c, "/parameters/cell_m")->value, "0.05");
   EXPECT_EQ(c.sections.front().figures.front().value, "demo 'a b'");  // the command line
   // Every keyed figure's value is the summary's value at its pointer, as displayed.
+  std::vector<formats::ReportFigure> keyed;
+  for (const auto& s : c.sections) keyed.insert(keyed.end(), s.figures.begin(), s.figures.end());
+  for (const auto& row : c.tables.at(0).rows) keyed.insert(keyed.end(), row.begin(), row.end());
   int checked = 0;
-  for (const auto& s : c.sections)
-    for (const auto& f : s.figures)
-      if (!f.key.empty()) {
-        const json& v = summary.at(json::json_pointer(f.key));
-        if (v.is_number_integer()) EXPECT_EQ(f.value, v.dump()) << f.key;
-        ++checked;
-      }
-  EXPECT_GE(checked, 12);
+  for (const auto& f : keyed) {
+    if (f.key.empty()) continue;
+    const json& v = summary.at(json::json_pointer(f.key));
+    if (v.is_number_integer()) {
+      EXPECT_EQ(f.value, v.dump()) << f.key;
+    } else if (v.is_string()) {
+      EXPECT_EQ(f.value, v.get<std::string>()) << f.key;
+    }
+    ++checked;
+  }
+  EXPECT_GE(checked, 13);
   EXPECT_EQ(c.warnings, std::vector<std::string>{"no ceiling"});
   ASSERT_EQ(c.pictures.size(), 1u);
   EXPECT_EQ(c.pictures[0].file, "map.png");
@@ -148,4 +160,34 @@ TEST(Report, FiguresAreSummaryValuesKeyedByTheirPointer) {
   app::ReportExtras extras;
   extras.descriptions["x.weird"] = "the app's own file";
   EXPECT_EQ(app::describe_output("sub/x.weird", extras), "the app's own file");
+}
+
+TEST(Report, InputsOfOneFolderAreListedRelativeToItAndNameTheTitle) {
+  const json summary = {
+      {"program", "pcd-to-map"},
+      {"provenance",
+       {{"inputs",
+         {{{"path", "/data/jacobs/scan000.3d"}, {"size_bytes", 10}, {"sha256", "aa"}},
+          {{"path", "/data/jacobs/sub/scan000.pose"}, {"size_bytes", 2}, {"sha256", "bb"}}}}}}};
+  const auto c = app::report_content(summary, test::scratch_dir(), {});
+  EXPECT_EQ(c.title, "pcd-to-map: jacobs");
+  ASSERT_EQ(c.tables.size(), 1u);
+  ASSERT_EQ(c.tables[0].rows.size(), 2u);
+  EXPECT_EQ(c.tables[0].rows[1][0].value, "sub/scan000.pose");
+  EXPECT_EQ(c.tables[0].rows[1][0].key, "");  // not the summary's path as written
+  EXPECT_EQ(c.tables[0].rows[1][2].value, "bb");
+  EXPECT_EQ(c.tables[0].rows[1][2].key, "/provenance/inputs/1/sha256");
+  const auto folder = std::find_if(c.sections[0].figures.begin(), c.sections[0].figures.end(),
+                                   [](const auto& f) { return f.label == "input folder"; });
+  ASSERT_NE(folder, c.sections[0].figures.end());
+  EXPECT_EQ(folder->value, "/data/jacobs");
+  // One file: its full path, keyed; no inputs at all: the program alone.
+  const json one = {{"program", "plan-route"},
+                    {"provenance", {{"inputs", {{{"path", "m/map.yaml"}, {"size_bytes", 1}}}}}}};
+  const auto c1 = app::report_content(one, test::scratch_dir(), {});
+  EXPECT_EQ(c1.title, "plan-route: map.yaml");
+  EXPECT_EQ(c1.tables[0].rows[0][0].value, "m/map.yaml");
+  EXPECT_EQ(c1.tables[0].rows[0][0].key, "/provenance/inputs/0/path");
+  EXPECT_EQ(app::report_content({{"program", "scene-sim"}}, test::scratch_dir(), {}).title,
+            "scene-sim");
 }

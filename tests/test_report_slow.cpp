@@ -3,6 +3,7 @@
 // back through --dump-dom), its numbers equal summary.json's, and a screenshot of pcd-to-map's
 // page on the default office cloud is not blank. Skips, saying so, when chromium is absent.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -22,39 +23,51 @@ using reliability::run_limited;
 
 namespace {
 
-bool have_chromium() { return std::system("command -v chromium >/dev/null 2>&1") == 0; }
+bool have_chromium() {
+  return std::system("command -v chromium >/dev/null 2>&1") == 0;
+}
 
-#define REQUIRE_CHROMIUM()                                                                  \
-  if (!have_chromium())                                                                     \
+#define REQUIRE_CHROMIUM()                                                                   \
+  if (!have_chromium())                                                                      \
   GTEST_SKIP() << "chromium not found: install Debian's chromium (scripts/setup.sh) to run " \
                   "the browser test of report.html"
 
 /// Runs headless chromium on file://page with a fresh profile and a time limit; returns its
 /// stdout (the DOM after load with --dump-dom). screenshot: also write a 1200 x 2000 PNG there.
 std::string browse(const fs::path& page, const fs::path& screenshot = {}) {
-  const fs::path work = test::scratch_dir() / ("chromium-" + page.parent_path().filename().string());
+  // Its own profile and DOM file per call, away from the test's scratch_dir (which
+  // scratch_dir() would empty, outputs and all).
+  static int calls = 0;
+  const fs::path work = fs::temp_directory_path() / "indoormap-tests" /
+                        ("chromium-" + std::to_string(::getpid()) + "-" + std::to_string(++calls));
+  fs::remove_all(work);
   fs::create_directories(work);
-  const std::string common = "timeout -k 5 40 chromium --headless --no-sandbox --disable-gpu "
-                             "--no-first-run --user-data-dir=" + (work / "profile").string() +
-                             " --window-size=1200,2000 --virtual-time-budget=5000 ";
+  const std::string common =
+      "timeout -k 5 40 chromium --headless --no-sandbox --disable-gpu "
+      "--no-first-run --user-data-dir=" +
+      (work / "profile").string() + " --window-size=1200,2000 --virtual-time-budget=5000 ";
   const std::string url = " file://" + fs::absolute(page).string();
   if (!screenshot.empty())
-    std::system((common + "--screenshot=" + screenshot.string() + url + " >/dev/null 2>&1").c_str());
+    std::system(
+        (common + "--screenshot=" + screenshot.string() + url + " >/dev/null 2>&1").c_str());
   const fs::path dom = work / "dom.html";
   std::system((common + "--dump-dom" + url + " >" + dom.string() + " 2>/dev/null").c_str());
-  return test::read_text(dom);
+  std::string text = test::read_text(dom);
+  fs::remove_all(work);  // the profile is a few MB
+  return text;
 }
 
 std::string unescape(std::string s) {
-  for (const auto& [from, to] : {std::pair{"&lt;", "<"}, std::pair{"&gt;", ">"},
-                                 std::pair{"&quot;", "\""}, std::pair{"&#39;", "'"},
-                                 std::pair{"&nbsp;", " "}, std::pair{"&amp;", "&"}})
+  for (const auto& [from, to] :
+       {std::pair{"&lt;", "<"}, std::pair{"&gt;", ">"}, std::pair{"&quot;", "\""},
+        std::pair{"&#39;", "'"}, std::pair{"&nbsp;", " "}, std::pair{"&amp;", "&"}})
     s = test::replace_all(s, from, to);
   return s;
 }
 
 /// The value of attribute name in the first tag starting with tag_start, or "".
-std::string attribute(const std::string& dom, const std::string& tag_start, const std::string& name) {
+std::string attribute(const std::string& dom, const std::string& tag_start,
+                      const std::string& name) {
   const auto at = dom.find(tag_start);
   if (at == std::string::npos) return "";
   const auto end = dom.find('>', at);
@@ -110,7 +123,8 @@ void check_report(const fs::path& dir, const std::string& summary_file = "summar
   EXPECT_EQ(html.find("https://"), std::string::npos) << "the page reaches the network";
   const std::string dom = browse(dir / page);
   ASSERT_EQ(attribute(dom, "<p id=\"check\"", "data-loaded"), "true")
-      << "the page did not load or its script did not run:\n" << dom.substr(0, 2000);
+      << "the page did not load or its script did not run:\n"
+      << dom.substr(0, 2000);
   const std::string images = attribute(dom, "<p id=\"check\"", "data-images");
   std::size_t in_file = 0;
   for (auto at = html.find("<img "); at != std::string::npos; at = html.find("<img ", at + 1))
@@ -196,8 +210,8 @@ TEST(ReportBrowser, MapEvalReportInItsOwnDirAndEvalHtmlBesideTheResult) {
   const fs::path& res = office_result();
   const std::string truth = std::string(INDOORMAP_SOURCE_DIR) + "/clouds/office/ground_truth.json";
   const fs::path out = test::scratch_dir() / "eval";
-  auto r = run_limited("map-eval", "--truth " + truth + " --result " + res.string() + " -o " +
-                                       out.string());
+  auto r = run_limited("map-eval",
+                       "--truth " + truth + " --result " + res.string() + " -o " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   check_report(out, "eval.json", "report.html", 0, 10);
   // Into the result's own directory: eval.html, the result's report.html kept.

@@ -118,13 +118,28 @@ void flatten(const json& v, const std::string& pointer, const std::string& label
     out.push_back({label, std::to_string(v.size()) + " entries (see summary.json)", ""});
   } else if (v.is_array()) {
     for (std::size_t i = 0; i < v.size(); ++i)
-      flatten(v[i], pointer + "/" + std::to_string(i), label + "[" + std::to_string(i) + "]",
-              out, depth + 1);
+      flatten(v[i], pointer + "/" + std::to_string(i), label + "[" + std::to_string(i) + "]", out,
+              depth + 1);
   } else {
     for (const auto& [k, e] : v.items())
       flatten(e, pointer + "/" + pointer_escape(k), label.empty() ? k : label + "." + k, out,
               depth + 1);
   }
+}
+
+// The folder every input file is in (its deepest common one), or "" for one file or none.
+fs::path common_folder(const json& files) {
+  if (files.size() < 2) return {};
+  fs::path common = fs::path(files[0].value("path", "")).parent_path();
+  for (const auto& f : files) {
+    const fs::path dir = fs::path(f.value("path", "")).parent_path();
+    fs::path shared;
+    for (auto a = common.begin(), b = dir.begin(); a != common.end() && b != dir.end() && *a == *b;
+         ++a, ++b)
+      shared /= *a;
+    common = shared;
+  }
+  return common;
 }
 
 formats::ReportSection inputs_section(const json& summary) {
@@ -139,14 +154,38 @@ formats::ReportSection inputs_section(const json& summary) {
   s.figures.push_back({"command line", line, ""});
   for (const char* k : {"started_utc", "version", "revision"})
     if (p.contains(k)) s.figures.push_back({k, scalar_text(p[k]), std::string("/provenance/") + k});
-  const json files = p.value("inputs", json::array());
+  const fs::path folder = common_folder(p.value("inputs", json::array()));
+  if (!folder.empty()) s.figures.push_back({"input folder", folder.string(), ""});
+  return s;
+}
+
+// One row per input file: its path (relative to the common folder), size and SHA-256.
+formats::ReportTable input_files_table(const json& summary) {
+  formats::ReportTable t{"Input files", {"file", "bytes", "SHA-256"}, {}};
+  const json files = summary.value("provenance", json::object()).value("inputs", json::array());
+  const fs::path folder = common_folder(files);
   for (std::size_t i = 0; i < files.size(); ++i) {
     const std::string at = "/provenance/inputs/" + std::to_string(i);
-    const std::string path = files[i].value("path", "");
-    s.figures.push_back({path + " (bytes)", number_text(files[i]["size_bytes"]), at + "/size_bytes"});
-    s.figures.push_back({path + " (SHA-256)", files[i].value("sha256", ""), at + "/sha256"});
+    const fs::path path = files[i].value("path", "");
+    const std::string shown =
+        folder.empty() ? path.string() : path.lexically_relative(folder).string();
+    t.rows.push_back({{"", shown, folder.empty() ? at + "/path" : ""},
+                      {"", number_text(files[i]["size_bytes"]), at + "/size_bytes"},
+                      {"", files[i].value("sha256", ""), at + "/sha256"}});
   }
-  return s;
+  return t;
+}
+
+// "<program>: <the input's file name, or the folder the inputs are in>".
+std::string default_title(const std::string& program, const json& prov) {
+  const json files = prov.value("inputs", json::array());
+  if (files.empty()) return program;
+  const fs::path folder = common_folder(files);
+  const fs::path name =
+      folder.empty() ? fs::path(files[0].value("path", "")).filename() : folder.filename();
+  return program + ": " + name.string() +
+         (folder.empty() && files.size() > 1 ? " and " + std::to_string(files.size() - 1) + " more"
+                                             : "");
 }
 
 std::string read_bytes(const fs::path& p) {
@@ -179,19 +218,18 @@ formats::ReportContent report_content(const json& summary, const fs::path& dir,
   formats::ReportContent c;
   const std::string program = summary.value("program", summary.value("app", "indoormap"));
   const json prov = summary.value("provenance", json::object());
-  c.title = extras.title;
-  if (c.title.empty()) {
-    const json in = prov.value("inputs", json::array());
-    c.title = program + (in.empty() ? "" : ": " + fs::path(in[0].value("path", "")).filename().string());
-  }
+  c.title = extras.title.empty() ? default_title(program, prov) : extras.title;
   c.subtitle = program + " " + prov.value("version", "") + " (" + prov.value("revision", "") +
                "), started " + prov.value("started_utc", "") + " UTC";
   c.sections.push_back(inputs_section(summary));
+  c.tables.push_back(input_files_table(summary));
   formats::ReportSection results{"Results", {}, false};
-  const std::set<std::string> skip = {"program",    "app",       "version",  "provenance", "outputs",
-                                      "timings_ms", "timings_s", "warnings", "parameters"};
+  const std::set<std::string> skip = {"program",    "app",      "version",
+                                      "provenance", "outputs",  "timings_ms",
+                                      "timings_s",  "warnings", "parameters"};
   for (const auto& [k, v] : summary.items())
-    if (!skip.count(k) && !v.is_object()) flatten(v, "/" + pointer_escape(k), k, results.figures, 0);
+    if (!skip.count(k) && !v.is_object())
+      flatten(v, "/" + pointer_escape(k), k, results.figures, 0);
   c.sections.push_back(results);
   for (const auto& [k, v] : summary.items()) {
     if (skip.count(k) || !v.is_object()) continue;

@@ -13,11 +13,12 @@ h1{font-size:1.6em;margin-bottom:.2em}h2{font-size:1.2em;border-bottom:1px solid
 .sub{color:#666;margin-top:0}table{border-collapse:collapse;margin:.4em 0}
 th,td{text-align:left;padding:2px 12px 2px 0;vertical-align:top}th{font-weight:normal;color:#555}
 td.v{font-family:monospace}.warn{background:#fff4e0;border-left:4px solid #e69500;padding:4px 8px}
-figure{display:inline-block;margin:0 1em 1em 0;vertical-align:top}
+.pics{display:flex;flex-wrap:wrap;gap:1em;align-items:flex-start}
+figure{margin:0;max-width:calc(50% - .5em)}
 img{max-width:100%;border:1px solid #ddd;image-rendering:pixelated}figcaption{color:#555}
 code{font-size:.95em}details summary{cursor:pointer;color:#555}
+h3{font-size:1em;margin:.8em 0 .2em}table.grid th{border-bottom:1px solid #ccc}
 .cards{display:flex;flex-wrap:wrap;gap:0 2.5em;align-items:flex-start}.card{max-width:100%}
-figure{max-width:calc(50% - 1em)}
 )";
 
 // Sets the markers the browser test reads (see the header) once the page and its images loaded.
@@ -34,12 +35,31 @@ window.addEventListener('load', function () {
 });
 )";
 
+void value_cell(std::ostream& o, const ReportFigure& f) {
+  o << "<td class=\"v\"";
+  if (!f.key.empty()) o << " data-key=\"" << html_escape(f.key) << "\"";
+  o << ">" << html_escape(f.value) << "</td>";
+}
+
 void figure_rows(std::ostream& o, const std::vector<ReportFigure>& figures) {
   o << "<table>\n";
   for (const auto& f : figures) {
-    o << "<tr><th>" << html_escape(f.label) << "</th><td class=\"v\"";
-    if (!f.key.empty()) o << " data-key=\"" << html_escape(f.key) << "\"";
-    o << ">" << html_escape(f.value) << "</td></tr>\n";
+    o << "<tr><th>" << html_escape(f.label) << "</th>";
+    value_cell(o, f);
+    o << "</tr>\n";
+  }
+  o << "</table>\n";
+}
+
+void table(std::ostream& o, const ReportTable& t) {
+  if (t.rows.empty()) return;
+  o << "<h3>" << html_escape(t.title) << "</h3>\n<table class=\"grid\">\n<tr>";
+  for (const auto& c : t.columns) o << "<th>" << html_escape(c) << "</th>";
+  o << "</tr>\n";
+  for (const auto& row : t.rows) {
+    o << "<tr>";
+    for (const auto& cell : row) value_cell(o, cell);
+    o << "</tr>\n";
   }
   o << "</table>\n";
 }
@@ -58,13 +78,13 @@ void section(std::ostream& o, const ReportSection& s) {
 
 void pictures(std::ostream& o, const std::vector<ReportPicture>& pics) {
   if (pics.empty()) return;
-  o << "<h2>Pictures</h2>\n";
+  o << "<h2>Pictures</h2>\n<div class=\"pics\">\n";
   for (const auto& p : pics) {
     o << "<figure><img alt=\"" << html_escape(p.file) << "\" src=\"data:image/png;base64,"
-      << base64_encode(p.png_bytes) << "\"><figcaption><a href=\"" << html_escape(p.file)
-      << "\">" << html_escape(p.file) << "</a>: " << html_escape(p.caption)
-      << "</figcaption></figure>\n";
+      << base64_encode(p.png_bytes) << "\"><figcaption><a href=\"" << html_escape(p.file) << "\">"
+      << html_escape(p.file) << "</a>: " << html_escape(p.caption) << "</figcaption></figure>\n";
   }
+  o << "</div>\n";
 }
 
 void files(std::ostream& o, const std::vector<ReportFile>& list) {
@@ -82,12 +102,23 @@ std::string html_escape(std::string_view text) {
   out.reserve(text.size());
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -137,6 +168,7 @@ std::string report_html(const ReportContent& c) {
     if (s.collapsed) continue;
     if (first) {
       section(o, s);
+      for (const auto& t : c.tables) table(o, t);
       pictures(o, c.pictures);
       o << "<div class=\"cards\">\n";
       first = false;
@@ -147,6 +179,7 @@ std::string report_html(const ReportContent& c) {
     o << "</div>\n";
   }
   if (first) {
+    for (const auto& t : c.tables) table(o, t);
     pictures(o, c.pictures);
     o << "<div class=\"cards\">\n";
   }

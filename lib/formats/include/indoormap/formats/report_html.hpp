@@ -5,7 +5,8 @@
 // CSS or JS: the page opens from a USB stick. Every text is HTML-escaped.
 //
 // Machine-checkable (tests/test_report_slow.cpp reads it through a headless browser):
-//   - every figure's value is `<td class="v" data-key="JSON pointer into summary.json">text</td>`;
+//   - every figure's value (and table cell) is
+//     `<td class="v" data-key="JSON pointer into summary.json">text</td>`;
 //   - an inline script sets, on load, `data-loaded="true"`, `data-images` (the number of <img>)
 //     and `data-images-shown` (those complete with naturalWidth > 0) on `<p id="check">`.
 #include <filesystem>
@@ -29,6 +30,14 @@ struct ReportSection {
   bool collapsed = false;  ///< shown folded (<details>), e.g. the parameters
 };
 
+/// A table with a header row, e.g. the input files (name, bytes, SHA-256). A cell's label is
+/// unused; its value and key are shown and marked as a figure's are.
+struct ReportTable {
+  std::string title;
+  std::vector<std::string> columns;
+  std::vector<std::vector<ReportFigure>> rows;
+};
+
 struct ReportFile {
   std::string name;         ///< path relative to the OUTDIR (the link target)
   std::string description;  ///< one line on what it is
@@ -46,6 +55,7 @@ struct ReportContent {
   /// In page order: the first (the inputs) full width, then the pictures, then the others side
   /// by side; collapsed ones last.
   std::vector<ReportSection> sections;
+  std::vector<ReportTable> tables;  ///< right after the first section (e.g. the input files)
   std::vector<std::string> warnings;
   std::vector<ReportFigure> timings;  ///< stage, milliseconds as text, summary.json pointer
   std::vector<ReportFile> files;
