@@ -32,8 +32,8 @@ bool have_chromium() {
   GTEST_SKIP() << "chromium not found: install Debian's chromium (scripts/setup.sh) to run " \
                   "the browser test of report.html"
 
-/// Runs headless chromium on file://page with a fresh profile and a time limit; returns its
-/// stdout (the DOM after load with --dump-dom). screenshot: also write a 1200 x 2000 PNG there.
+/// Runs headless chromium once on file://page with a fresh profile and a time limit; returns
+/// the DOM after load (--dump-dom). screenshot: also writes a 1200 x 2000 PNG there.
 std::string browse(const fs::path& page, const fs::path& screenshot = {}) {
   // Its own profile and DOM file per call, away from the test's scratch_dir (which
   // scratch_dir() would empty, outputs and all).
@@ -42,16 +42,14 @@ std::string browse(const fs::path& page, const fs::path& screenshot = {}) {
                         ("chromium-" + std::to_string(::getpid()) + "-" + std::to_string(++calls));
   fs::remove_all(work);
   fs::create_directories(work);
-  const std::string common =
-      "timeout -k 5 40 chromium --headless --no-sandbox --disable-gpu "
-      "--no-first-run --user-data-dir=" +
-      (work / "profile").string() + " --window-size=1200,2000 --virtual-time-budget=5000 ";
-  const std::string url = " file://" + fs::absolute(page).string();
-  if (!screenshot.empty())
-    std::system(
-        (common + "--screenshot=" + screenshot.string() + url + " >/dev/null 2>&1").c_str());
   const fs::path dom = work / "dom.html";
-  std::system((common + "--dump-dom" + url + " >" + dom.string() + " 2>/dev/null").c_str());
+  const std::string command =
+      "timeout -k 5 40 chromium --headless --no-sandbox --disable-gpu --no-first-run "
+      "--user-data-dir=" +
+      (work / "profile").string() + " --window-size=1200,2000 --virtual-time-budget=5000 " +
+      (screenshot.empty() ? "" : "--screenshot=" + screenshot.string() + " ") +
+      "--dump-dom file://" + fs::absolute(page).string() + " >" + dom.string() + " 2>/dev/null";
+  std::system(command.c_str());
   std::string text = test::read_text(dom);
   fs::remove_all(work);  // the profile is a few MB
   return text;
@@ -113,15 +111,16 @@ int check_figures(const std::string& dom, const json& summary) {
 
 /// Opens dir/page in the browser: it loads, every picture shows, at least min_figures of its
 /// numbers are checked against dir/summary_file and its inputs carry their SHA-256.
+/// screenshot: also writes the browser's screenshot of the page there.
 void check_report(const fs::path& dir, const std::string& summary_file = "summary.json",
                   const std::string& page = "report.html", int min_pictures = 1,
-                  int min_figures = 10) {
+                  int min_figures = 10, const fs::path& screenshot = {}) {
   SCOPED_TRACE(dir / page);
   ASSERT_TRUE(fs::exists(dir / page));
   const std::string html = test::read_text(dir / page);
   EXPECT_EQ(html.find("http://"), std::string::npos) << "the page reaches the network";
   EXPECT_EQ(html.find("https://"), std::string::npos) << "the page reaches the network";
-  const std::string dom = browse(dir / page);
+  const std::string dom = browse(dir / page, screenshot);
   ASSERT_EQ(attribute(dom, "<p id=\"check\"", "data-loaded"), "true")
       << "the page did not load or its script did not run:\n"
       << dom.substr(0, 2000);
@@ -169,27 +168,18 @@ std::string box_log() {
   return log;
 }
 
-/// pcd-to-map on the default office cloud, run once for the suite (map-eval reads it too).
-const fs::path& office_result() {
-  static const fs::path out = [] {
-    const fs::path o = fs::temp_directory_path() / "indoormap-tests" / "report-office";
-    fs::remove_all(o);
-    const auto r = run_limited("pcd-to-map", std::string(INDOORMAP_SOURCE_DIR) +
-                                                 "/clouds/office/cloud.pcd -q -o " + o.string());
-    EXPECT_EQ(r.exit_code, 0) << r.err;
-    return o;
-  }();
-  return out;
-}
-
 }  // namespace
 
-TEST(ReportBrowser, PcdToMapOfficeReportShowsItsPicturesAndSummaryNumbers) {
+// pcd-to-map on the default office cloud, then map-eval on its result (one test: the office run
+// is the longest app run here, and ctest runs each test in a process of its own).
+TEST(ReportBrowser, PcdToMapOfficeAndMapEvalReportsShowTheirPicturesAndSummaryNumbers) {
   REQUIRE_CHROMIUM();
-  const fs::path& out = office_result();
-  check_report(out, "summary.json", "report.html", 4, 100);
-  const fs::path shot = test::scratch_dir() / "office.png";
-  browse(out / "report.html", shot);
+  const fs::path dir = test::scratch_dir();  // once: every call empties it
+  const fs::path res = dir / "office", eval = dir / "eval", shot = dir / "office.png";
+  auto r = run_limited("pcd-to-map", std::string(INDOORMAP_SOURCE_DIR) +
+                                         "/clouds/office/cloud.pcd -q -o " + res.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  check_report(res, "summary.json", "report.html", 4, 100, shot);
   const cv::Mat img = cv::imread(shot.string(), cv::IMREAD_COLOR);
   ASSERT_FALSE(img.empty()) << "no screenshot";
   EXPECT_EQ(img.cols, 1200);
@@ -203,18 +193,14 @@ TEST(ReportBrowser, PcdToMapOfficeReportShowsItsPicturesAndSummaryNumbers) {
   std::vector<cv::Mat> ch;
   cv::split(hsv, ch);
   EXPECT_GT(cv::countNonZero(ch[1] > 80), 1000) << "no coloured picture on screen";
-}
 
-TEST(ReportBrowser, MapEvalReportInItsOwnDirAndEvalHtmlBesideTheResult) {
-  REQUIRE_CHROMIUM();
-  const fs::path& res = office_result();
+  // map-eval: report.html in an output directory of its own; into the result's directory it
+  // writes eval.html and keeps the result's report.html.
   const std::string truth = std::string(INDOORMAP_SOURCE_DIR) + "/clouds/office/ground_truth.json";
-  const fs::path out = test::scratch_dir() / "eval";
-  auto r = run_limited("map-eval",
-                       "--truth " + truth + " --result " + res.string() + " -o " + out.string());
+  r = run_limited("map-eval",
+                  "--truth " + truth + " --result " + res.string() + " -o " + eval.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  check_report(out, "eval.json", "report.html", 0, 10);
-  // Into the result's own directory: eval.html, the result's report.html kept.
+  check_report(eval, "eval.json", "report.html", 0, 10);
   const std::string before = test::read_text(res / "report.html");
   r = run_limited("map-eval", "--truth " + truth + " --result " + res.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -225,7 +211,8 @@ TEST(ReportBrowser, MapEvalReportInItsOwnDirAndEvalHtmlBesideTheResult) {
 TEST(ReportBrowser, EveryOtherAppsReportShowsItsPicturesAndSummaryNumbers) {
   REQUIRE_CHROMIUM();
   const fs::path dir = test::scratch_dir();
-  const std::string cloud = std::string(INDOORMAP_SOURCE_DIR) + "/clouds/office/cloud.pcd";
+  test::write_text(dir / "desk.xyz", reliability::room_xyz(true));  // a 4 x 3 m room, one desk
+  const std::string cloud = (dir / "desk.xyz").string() + " --scanner 1,1,1.2";
   const std::string map = reliability::small_map(dir).string();
   test::write_text(dir / "box.log", box_log());
   const std::string log = (dir / "box.log").string();
