@@ -39,7 +39,7 @@ for s in range(first, last + 1):
     n_small = sum(1 for o in objs if o["kind"] not in ("column", "installation") and o["area_m2"] < min_area - 1e-9)
     lo = summ["objects"].get("left_over_cells", 0)
     T += e["truth_count"]; R += e["result_count"]; M += e["matched"]
-    MA += e.get("matched_all", e["matched"])
+    MA += e["matched_all"]  # every match (precision); "matched": truth items >= min area (recall)
     small += n_small; left += lo
     se = [abs(m["z_max_error_m"]) for m in e["matches"] if m.get("z_max_error_m") is not None]
     errs += se

@@ -156,7 +156,7 @@ PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_
   for (const auto& in : cli.inputs) names += (names.empty() ? "" : ", ") + in;
   const std::string unit = unit_hint(extent, cfg.load.unit_m);  // empty unless over 1 km wide
   try {
-    const ProgressReporter ghost_bar("ghost filter", "rays", cli.quiet);
+    const ProgressReporter ghost_bar("ghost filter", "voxels", cli.quiet);
     cfg.map.ghosts.progress = ghost_bar.fn();
     auto maps = layout::make_storey_maps(std::move(loaded.cloud), cfg.map, cfg.storeys, cli.storey);
     cfg.map.ghosts.progress = nullptr;

@@ -73,6 +73,7 @@ ordered_json objects_json(const sim::ObjectScores& s) {
   j["truth_count"] = s.truth_count;
   j["result_count"] = s.result_count;
   j["matched"] = s.matched;
+  j["matched_all"] = s.matched_all;  // with the matches of truth items below min_area: precision's
   j["recall"] = s.recall;
   j["precision"] = s.precision;
   j["mean_abs_z_max_error_m"] = opt(s.mean_abs_z_max_error_m);
