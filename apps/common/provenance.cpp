@@ -76,8 +76,12 @@ void record_invocation(int argc, const char* const* argv) {
   inv.started_utc = utc_now_iso8601();
 }
 
-const std::vector<std::string>& command_line() { return invocation().argv; }
-const std::string& started_utc() { return invocation().started_utc; }
+const std::vector<std::string>& command_line() {
+  return invocation().argv;
+}
+const std::string& started_utc() {
+  return invocation().started_utc;
+}
 
 std::string sha256_hex(std::string_view bytes) {
   Sha256 h;
@@ -105,9 +109,10 @@ std::vector<FileDigest> digest_inputs(const std::vector<std::string>& inputs) {
   auto add = [&](const fs::path& p) {
     auto it = cache.find(p.string());
     if (it == cache.end())
-      it = cache.emplace(p.string(), FileDigest{p.string(),
-                                                static_cast<std::uint64_t>(fs::file_size(p)),
-                                                sha256_file(p)})
+      it = cache
+               .emplace(p.string(),
+                        FileDigest{p.string(), static_cast<std::uint64_t>(fs::file_size(p)),
+                                   sha256_file(p)})
                .first;
     out.push_back(it->second);
   };

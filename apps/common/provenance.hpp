@@ -7,11 +7,10 @@
 // app parses its arguments; provenance_json() reads what it recorded.
 #include <cstdint>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 namespace indoormap::app {
 

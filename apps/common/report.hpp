@@ -11,10 +11,9 @@
 // last, folded.
 #include <filesystem>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "indoormap/formats/report_html.hpp"
 
