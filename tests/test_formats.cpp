@@ -10,6 +10,7 @@
 #include "indoormap/formats/json.hpp"
 #include "indoormap/formats/objects_json.hpp"
 #include "indoormap/formats/pgm.hpp"
+#include "indoormap/formats/report_html.hpp"
 #include "indoormap/formats/room_geojson.hpp"
 #include "indoormap/formats/ros_map.hpp"
 #include "indoormap/formats/route_json.hpp"
@@ -432,3 +433,60 @@ INSTANTIATE_TEST_SUITE_P(
         MapCase{"png_zero_size", kYaml, png_header(0, 5), "map image has no pixels"},
         MapCase{"png_corrupt", kYaml, png_header(4, 4), "cannot decode the map image"}),
     [](const auto& info) { return info.param.name; });
+
+TEST(ReportHtml, Base64MatchesRfc4648Vectors) {
+  // RFC 4648, section 10.
+  const std::pair<const char*, const char*> vectors[] = {{"", ""},
+                                                         {"f", "Zg=="},
+                                                         {"fo", "Zm8="},
+                                                         {"foo", "Zm9v"},
+                                                         {"foob", "Zm9vYg=="},
+                                                         {"fooba", "Zm9vYmE="},
+                                                         {"foobar", "Zm9vYmFy"}};
+  for (const auto& [in, out] : vectors) EXPECT_EQ(formats::base64_encode(in), out) << in;
+  EXPECT_EQ(formats::base64_encode(std::string("\x00\xff\xfe", 3)), "AP/+");
+}
+
+TEST(ReportHtml, EscapesEveryTextAndAttribute) {
+  EXPECT_EQ(formats::html_escape("a<b>&\"c'"), "a&lt;b&gt;&amp;&quot;c&#39;");
+  formats::ReportContent c;
+  c.title = "<script>alert(1)</script>";
+  c.warnings = {"wall & door <unclosed>"};
+  c.sections.push_back({"Results", {{"k<1>", "v\"2\"", "/a\"b"}}, false});
+  c.files = {{"x&y.json", "it's <data>"}};
+  c.tables.push_back(
+      {"Input <files>", {"file", "SHA-256"}, {{{"", "a&b.pcd", ""}, {"", "ff", "/i"}}}});
+  const std::string page = formats::report_html(c);
+  EXPECT_NE(page.find("<h3>Input &lt;files&gt;</h3>"), std::string::npos);
+  EXPECT_NE(
+      page.find("<tr><td class=\"v\">a&amp;b.pcd</td><td class=\"v\" data-key=\"/i\">ff</td></tr>"),
+      std::string::npos);
+  EXPECT_EQ(page.find("<script>alert"), std::string::npos);
+  EXPECT_NE(page.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
+  EXPECT_NE(page.find("wall &amp; door &lt;unclosed&gt;"), std::string::npos);
+  EXPECT_NE(page.find("<td class=\"v\" data-key=\"/a&quot;b\">v&quot;2&quot;</td>"),
+            std::string::npos)
+      << page;
+  EXPECT_NE(page.find("href=\"x&amp;y.json\""), std::string::npos);
+  EXPECT_NE(page.find("it&#39;s &lt;data&gt;"), std::string::npos);
+}
+
+TEST(ReportHtml, EmbedsPicturesAndNeedsNoNetwork) {
+  formats::ReportContent c;
+  c.title = "t";
+  c.sections.push_back({"Inputs", {}, false});
+  c.sections.push_back({"Parameters", {{"cell_m", "0.05", "/parameters/cell_m"}}, true});
+  c.pictures.push_back({"map.png", "the map", std::string("\x89PNG\r\n", 6)});
+  c.timings.push_back({"load (ms)", "12.5", "/timings_ms/load"});
+  const fs::path file = test::scratch_dir() / "report.html";
+  formats::write_report_html(file, c);
+  const std::string page = test::read_text(file);
+  EXPECT_EQ(page, formats::report_html(c));
+  EXPECT_NE(page.find("src=\"data:image/png;base64,iVBORw0K\""), std::string::npos) << page;
+  for (const char* remote : {"http://", "https://", "<link", "src=\"http", "@import"})
+    EXPECT_EQ(page.find(remote), std::string::npos) << remote;
+  // The folded parameters come after the output files; the check marker is there.
+  EXPECT_LT(page.find("Output files"), page.find("<details>"));
+  EXPECT_NE(page.find("<p id=\"check\""), std::string::npos);
+  EXPECT_NE(page.find("data-key=\"/timings_ms/load\">12.5<"), std::string::npos);
+}

@@ -91,7 +91,8 @@ TEST(LaserToMap, WritesEveryOutputOfAGeneratedRoom) {
     auto r = run_app("laser-to-map", log.string() + " --method " + method + " -o " + out.string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.err.find("consistency"), std::string::npos) << r.err;
-    for (const char* f : {"map.pgm", "map.yaml", "map.png", "laser_map.json", "summary.json"})
+    for (const char* f : {"map.pgm", "map.yaml", "map.png", "laser_map.json", "summary.json",
+                          "report.html"})
       EXPECT_TRUE(fs::exists(out / f)) << f;
     const json lm = read_json(out / "laser_map.json");
     EXPECT_EQ(lm["method"], method);
@@ -105,7 +106,7 @@ TEST(LaserToMap, WritesEveryOutputOfAGeneratedRoom) {
     const json sm = read_json(out / "summary.json");
     EXPECT_EQ(sm["program"], "laser-to-map");
     EXPECT_EQ(sm["parameters"]["mapping"]["method"], method);
-    EXPECT_EQ(sm["outputs"].size(), 5u);
+    EXPECT_EQ(sm["outputs"].size(), 6u);  // the five above and report.html
     const std::string yaml = indoormap::test::read_text(out / "map.yaml");
     EXPECT_NE(yaml.find("image: map.pgm"), std::string::npos) << yaml;
     EXPECT_NE(yaml.find("resolution: 0.05"), std::string::npos) << yaml;

@@ -69,6 +69,7 @@ TEST(OutputSet, FilesOfTheAppsEarlierRunAreRemovedOthersKept) {
   const std::string manifest = test::read_text(out / ".indoormap-outputs");
   EXPECT_NE(manifest.find("map-eval eval.json\n"), std::string::npos) << manifest;
   EXPECT_NE(manifest.find("plan-route summary.json\n"), std::string::npos) << manifest;
+  EXPECT_NE(manifest.find("plan-route report.html\n"), std::string::npos) << manifest;
   EXPECT_EQ(manifest.find("extra.png"), std::string::npos) << manifest;
 }
 

@@ -4,10 +4,13 @@
 #include <new>
 
 #include "indoormap/core/errors.hpp"
+#include "provenance.hpp"
 
 namespace indoormap::app {
 
-int run_guarded(const std::string& prog, const std::function<int()>& body) {
+int run_guarded(const std::string& prog, int argc, const char* const* argv,
+                const std::function<int()>& body) {
+  record_invocation(argc, argv);
   try {
     return body();
   } catch (const Error& e) {

@@ -102,4 +102,11 @@ formats::RosMap load_map_argument(const std::string& path, double resolution_m, 
   return formats::read_plain_map(path, resolution_m, free_min);
 }
 
+std::vector<std::string> map_argument_files(const std::string& path) {
+  const std::string ext = fs::path(path).extension().string();
+  if (ext != ".yaml" && ext != ".yml") return {path};
+  const fs::path image = read_map_yaml(path).image;
+  return {path, (image.is_absolute() ? image : fs::path(path).parent_path() / image).string()};
+}
+
 }  // namespace indoormap::app

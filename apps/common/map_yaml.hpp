@@ -4,6 +4,8 @@
 // (issue 12), with the same loader as the configs.
 #include <cstdint>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "indoormap/formats/ros_map.hpp"
 
@@ -22,5 +24,10 @@ formats::RosMap read_ros_map(const std::filesystem::path& yaml_path,
 /// or a plain PNG / PGM image read with resolution_m metres per pixel and free_min
 /// (formats::read_plain_map). Throws UsageError when the resolution does not fit the kind.
 formats::RosMap load_map_argument(const std::string& path, double resolution_m, int free_min);
+
+/// The files a MAP argument reads, for the provenance (provenance.hpp): a map YAML and the image
+/// it names (relative to the YAML's folder), or the plain image itself. Call after
+/// load_map_argument succeeded.
+std::vector<std::string> map_argument_files(const std::string& path);
 
 }  // namespace indoormap::app

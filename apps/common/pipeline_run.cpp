@@ -15,6 +15,8 @@
 #include "indoormap/formats/ros_map.hpp"
 #include "indoormap/version.hpp"
 #include "progress.hpp"
+#include "provenance.hpp"
+#include "report.hpp"
 #include "scanner_positions.hpp"
 
 namespace indoormap::app {
@@ -118,9 +120,11 @@ void finish_summary(json& summary, const fs::path& out, std::vector<std::string>
                     std::chrono::steady_clock::time_point start) {
   summary["timings_ms"]["write"] = ms_since(write_start);
   summary["timings_ms"]["total"] = ms_since(start);
+  outputs.push_back(kReportFile);
   outputs.push_back("summary.json");
   summary["outputs"] = outputs;
   formats::write_json(out / "summary.json", summary);
+  write_report(out, summary, outputs);
 }
 
 PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_input_points) {
@@ -275,9 +279,12 @@ json summary_json(const std::string& program, const PipelineRun& run, const Pipe
   }
   json timings = {{"load", run.load_ms}};
   for (const auto& t : m.timings) timings[t.stage] = t.ms;
+  std::vector<std::string> input_paths;
+  for (const auto& in : run.inputs) input_paths.push_back(in.path);
   return {
       {"program", program},
       {"version", kVersion},
+      {"provenance", provenance_json(input_paths)},
       {"inputs", inputs},
       {"points",
        {{"read", read},

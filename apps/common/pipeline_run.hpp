@@ -54,7 +54,8 @@ objects::ObjectsResult timed_objects(const layout::MapResult& map,
 border::BorderResult timed_border(const layout::MapResult& map, const border::BorderParams& params,
                                   double* ms);
 
-/// Adds the write and total timings and the output list to the summary, and writes it.
+/// Adds the write and total timings and the output list (report.html and summary.json last) to
+/// the summary, writes it and then report.html from it (report.hpp).
 void finish_summary(nlohmann::json& summary, const std::filesystem::path& out,
                     std::vector<std::string> outputs,
                     std::chrono::steady_clock::time_point write_start,

@@ -22,6 +22,8 @@
 #include "map_yaml.hpp"
 #include "output_set.hpp"
 #include "progress.hpp"
+#include "provenance.hpp"
+#include "report.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
@@ -180,9 +182,12 @@ int run(int argc, char** argv) {
   app::OutputSet staged(out, "explore-sim");  // all or nothing: docs/explore-sim.md
   auto files = app::write_explore_files(staged.dir(), r, info);
   const double write_ms = ms_since(t0);
+  files.push_back(app::kReportFile);
+  files.push_back("summary.json");
   const json summary = {
       {"program", "explore-sim"},
       {"version", kVersion},
+      {"provenance", app::provenance_json(app::map_argument_files(a.map_path))},
       {"map", a.map_path},
       {"grid",
        {{"width", map.geometry.width()},
@@ -201,15 +206,10 @@ int run(int argc, char** argv) {
         {"explore", explore_ms},
         {"write", write_ms},
         {"total", ms_since(t_start)}}},
-      {"outputs",
-       [&] {
-         auto all = files;
-         all.push_back("summary.json");
-         return all;
-       }()},
+      {"outputs", files},
   };
   formats::write_json(staged.dir() / "summary.json", summary);
-  files.push_back("summary.json");
+  app::write_report(staged.dir(), summary, files);
   staged.commit();
   if (!a.quiet) {
     const auto d95 = r.distance_to_share(0.95);
@@ -231,5 +231,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return app::run_guarded("explore-sim", [&] { return run(argc, argv); });
+  return app::run_guarded("explore-sim", argc, argv, [&] { return run(argc, argv); });
 }

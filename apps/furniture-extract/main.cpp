@@ -83,5 +83,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return app::run_guarded("furniture-extract", [&] { return run(argc, argv); });
+  return app::run_guarded("furniture-extract", argc, argv, [&] { return run(argc, argv); });
 }

@@ -18,6 +18,8 @@
 #include "main_guard.hpp"
 #include "map_yaml.hpp"
 #include "output_set.hpp"
+#include "provenance.hpp"
+#include "report.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
@@ -140,10 +142,14 @@ int run(int argc, char** argv) {
   const auto t_write = Clock::now();
   app::OutputSet set(out, "grid-areas");  // all or nothing: docs/grid-areas.md, "Outputs"
   auto files = app::write_grid_areas_outputs(set.dir(), run);
+  files.push_back(app::kReportFile);
   files.push_back("summary.json");
+  std::vector<std::string> inputs = app::map_argument_files(a.map_path);
+  if (!a.truth_path.empty()) inputs.push_back(a.truth_path);
   const json summary = {
       {"program", "grid-areas"},
       {"version", kVersion},
+      {"provenance", app::provenance_json(inputs)},
       {"map", a.map_path},
       {"parameters", app::to_json(run.config)},
       {"result", app::areas_summary_json(run)},
@@ -155,6 +161,7 @@ int run(int argc, char** argv) {
       {"outputs", files},
   };
   formats::write_json(set.dir() / "summary.json", summary);
+  app::write_report(set.dir(), summary, files);
   set.commit();
   if (!a.quiet) {
     const json s = app::areas_summary_json(run);
@@ -175,5 +182,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return app::run_guarded("grid-areas", [&] { return run(argc, argv); });
+  return app::run_guarded("grid-areas", argc, argv, [&] { return run(argc, argv); });
 }

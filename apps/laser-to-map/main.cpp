@@ -18,6 +18,8 @@
 #include "laser_run.hpp"
 #include "main_guard.hpp"
 #include "output_set.hpp"
+#include "provenance.hpp"
+#include "report.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
@@ -109,10 +111,12 @@ int run(int argc, char** argv) {
   const auto t_write = Clock::now();
   app::OutputSet set(out, "laser-to-map");  // all or nothing: docs/laser-to-map.md, "Outputs"
   auto files = app::write_laser_map_outputs(set.dir(), r);
+  files.push_back(app::kReportFile);
   files.push_back("summary.json");
   const json summary = {
       {"program", "laser-to-map"},
       {"version", kVersion},
+      {"provenance", app::provenance_json({a.log_path})},
       {"log", a.log_path},
       {"parameters", app::to_json(cfg)},
       {"result", app::laser_map_json(r)},
@@ -124,6 +128,7 @@ int run(int argc, char** argv) {
       {"outputs", files},
   };
   formats::write_json(set.dir() / "summary.json", summary);
+  app::write_report(set.dir(), summary, files);
   set.commit();
   if (!a.quiet) {
     const auto& c = r.check;
@@ -143,5 +148,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return app::run_guarded("laser-to-map", [&] { return run(argc, argv); });
+  return app::run_guarded("laser-to-map", argc, argv, [&] { return run(argc, argv); });
 }

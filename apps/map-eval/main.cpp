@@ -19,6 +19,8 @@
 #include "main_guard.hpp"
 #include "output_set.hpp"
 #include "progress.hpp"
+#include "provenance.hpp"
+#include "report.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
@@ -103,6 +105,15 @@ ordered_json storeys_json(const formats::TruthFile& truth, const fs::path& dir,
   return list;
 }
 
+/// The files map-eval reads, for the provenance: the truth and RESULT's top-level result files.
+std::vector<std::string> evaluated_inputs(const std::string& truth_file, const fs::path& result) {
+  std::vector<std::string> files{truth_file};
+  for (const char* f : {"layout.pgm", "layout.yaml", "map.pgm", "map.yaml", "objects.json",
+                        "room.geojson", "summary.json"})
+    if (fs::is_regular_file(result / f)) files.push_back((result / f).string());
+  return files;
+}
+
 int run(int argc, char** argv) {
   CLI::App app{
       "map-eval: compares pcd-to-map / furniture-extract results with a scene-sim ground truth and "
@@ -166,6 +177,7 @@ int run(int argc, char** argv) {
   ordered_json report;
   report["app"] = "map-eval";
   report["version"] = kVersion;
+  report["provenance"] = app::provenance_json(evaluated_inputs(truth_file, dir));
   report["truth"] = truth_file;
   report["result"] = result_dir;
   report["parameters"] = {{"min_object_iou", p.min_object_iou},
@@ -184,7 +196,12 @@ int run(int argc, char** argv) {
   report["missing"] = missing;
   {
     app::OutputSet set(out_dir, "map-eval");  // all or nothing: docs/map-eval.md, "Outputs"
+    // The page is report.html in an OUTDIR of its own, eval.html beside the result's report.html.
+    const std::string page = fs::equivalent(out_dir, result_dir) ? "eval.html" : app::kReportFile;
     write_file_atomic(set.dir() / "eval.json", report.dump(2) + "\n");
+    app::ReportExtras extras;
+    extras.descriptions[app::kReportFile] = "this page";
+    app::write_report(set.dir(), nlohmann::json(report), {page, "eval.json"}, extras, page);
     set.commit();
   }
   if (evaluated == 0) {
@@ -202,5 +219,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return app::run_guarded("map-eval", [&] { return run(argc, argv); });
+  return app::run_guarded("map-eval", argc, argv, [&] { return run(argc, argv); });
 }

@@ -14,6 +14,8 @@
 #include "objects_outputs.hpp"
 #include "output_set.hpp"
 #include "pipeline_run.hpp"
+#include "provenance.hpp"
+#include "report.hpp"
 #include "rooms_outputs.hpp"
 #include "route_outputs.hpp"
 
@@ -122,6 +124,7 @@ int run(int argc, char** argv) {
       summary["storey"] = w.index;
       app::finish_summary(summary, dir, outputs, t_write, setup->start);
       for (const auto& f : outputs) top_outputs.push_back(sub + "/" + f);
+      top_outputs.push_back(sub + "/" + app::kReportFile);
       top_outputs.push_back(sub + "/summary.json");
     }
     app::report("pcd-to-map", run, setup->cli.quiet);
@@ -129,6 +132,7 @@ int run(int argc, char** argv) {
   if (storeyed) {  // OUTDIR/summary.json: the storeys and where their outputs are
     json summary = {{"program", "pcd-to-map"},
                     {"version", kVersion},
+                    {"provenance", app::provenance_json(setup->cli.inputs)},
                     {"storeys", app::storeys_json(run)},
                     {"source_frame", app::source_frame_json(run, cfg)},
                     {"parameters", app::to_json(cfg)}};
@@ -144,5 +148,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return app::run_guarded("pcd-to-map", [&] { return run(argc, argv); });
+  return app::run_guarded("pcd-to-map", argc, argv, [&] { return run(argc, argv); });
 }

@@ -14,6 +14,8 @@
 #include "indoormap/version.hpp"
 #include "map_yaml.hpp"
 #include "output_set.hpp"
+#include "provenance.hpp"
+#include "report.hpp"
 #include "plan_config.hpp"
 #include "progress.hpp"
 #include "route_files.hpp"
@@ -144,10 +146,12 @@ int run(int argc, char** argv) {
   app::OutputSet set(out, "plan-route");  // all or nothing: docs/plan-route.md, "Outputs"
   auto files = app::write_route_files(set.dir(), rep);
   const double write_ms = ms_since(t0);
+  files.push_back(app::kReportFile);
   files.push_back("summary.json");
   json summary = {
       {"program", "plan-route"},
       {"version", kVersion},
+      {"provenance", app::provenance_json(app::map_argument_files(a.map_path))},
       {"map", a.map_path},
       {"grid",
        {{"width", map.geometry.width()},
@@ -175,6 +179,7 @@ int run(int argc, char** argv) {
       {"outputs", files},
   };
   formats::write_json(set.dir() / "summary.json", summary);
+  app::write_report(set.dir(), summary, files);
   set.commit();
   if (result.routes.empty()) {
     std::cerr << "plan-route: " << result.message << "\n";
@@ -191,5 +196,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return app::run_guarded("plan-route", [&] { return run(argc, argv); });
+  return app::run_guarded("plan-route", argc, argv, [&] { return run(argc, argv); });
 }

@@ -132,5 +132,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return app::run_guarded("scan-features", [&] { return run(argc, argv); });
+  return app::run_guarded("scan-features", argc, argv, [&] { return run(argc, argv); });
 }

@@ -6,6 +6,8 @@
 #include "indoormap/draw/scan_features_png.hpp"
 #include "indoormap/formats/json.hpp"
 #include "indoormap/version.hpp"
+#include "provenance.hpp"
+#include "report.hpp"
 
 namespace indoormap::app {
 
@@ -50,17 +52,20 @@ std::vector<std::string> write_scan_features_outputs(const std::filesystem::path
     formats::write_align_json(out / "align.json", run.pairs, run.align_summary);
     files.push_back("align.json");
   }
+  files.push_back(kReportFile);
   files.push_back("summary.json");
   timings_ms["write"] =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   const json summary = {{"program", "scan-features"},
                         {"version", kVersion},
+                        {"provenance", provenance_json({run.log_path})},
                         {"log", run.log_path},
                         {"parameters", to_json(run.config)},
                         {"result", scan_features_result_json(run)},
                         {"timings_ms", timings_ms},
                         {"outputs", files}};
   formats::write_json(out / "summary.json", summary);
+  write_report(out, summary, files);
   return files;
 }
 

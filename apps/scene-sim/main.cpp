@@ -23,6 +23,8 @@
 #include "main_guard.hpp"
 #include "output_set.hpp"
 #include "progress.hpp"
+#include "provenance.hpp"
+#include "report.hpp"
 #include "scene_outputs.hpp"
 #include "scene_yaml.hpp"
 
@@ -133,6 +135,8 @@ nlohmann::ordered_json summary_json(const Args& a, const scene_sim::Config& conf
   nlohmann::ordered_json summary;
   summary["app"] = "scene-sim";
   summary["version"] = kVersion;
+  summary["provenance"] =
+      app::provenance_json(a.random ? std::vector<std::string>{} : std::vector{a.scene_file});
   summary["scene"] = a.random ? "random" : a.scene_file;
   summary["seed"] = scene.seed;
   if (a.random) summary["rooms"] = config.random.rooms;
@@ -313,9 +317,13 @@ int run(int argc, char** argv) {
 
   const double sim_s = std::chrono::duration<double>(t1 - t0).count();
   const double write_s = std::chrono::duration<double>(t2 - t1).count();
+  std::vector<std::string> files = written.files;
+  files.push_back(app::kReportFile);
+  files.push_back("summary.json");
   const nlohmann::ordered_json summary =
-      summary_json(a, config, building, result, truths, written.files, sim_s, write_s);
+      summary_json(a, config, building, result, truths, files, sim_s, write_s);
   write_file_atomic(set.dir() / "summary.json", summary.dump(2) + "\n");
+  app::write_report(set.dir(), nlohmann::json(summary), files);
   set.commit();
   if (!a.quiet)
     std::fprintf(stderr, "scene-sim: %zu points (%.1f M points/s), outputs in %s\n",
@@ -327,5 +335,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return app::run_guarded("scene-sim", [&] { return run(argc, argv); });
+  return app::run_guarded("scene-sim", argc, argv, [&] { return run(argc, argv); });
 }
