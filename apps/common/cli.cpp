@@ -27,16 +27,17 @@ void add_pipeline_options(CLI::App& app, PipelineCli& cli) {
   app.add_flag("-q,--quiet", cli.quiet,
                "No progress or run report on stderr (warnings still shown)");
   app.add_option("--scans", cli.scans, "3DTK: scan numbers to read, e.g. 0-8 or 3");
-  app.add_option("--up-axis", cli.up_axis, "Up axis of PCD/PLY/XYZ input: z (default) or y")
+  app.add_option("--up-axis", cli.up_axis, "Up axis of PCD/PLY/XYZ/LAS input: z (default) or y")
       ->check(CLI::IsMember({"z", "y"}));
   app.add_option("--unit", cli.unit,
-                 "Unit of PCD/PLY/XYZ input: m (default), cm, mm, or metres per unit");
+                 "Unit of PCD/PLY/XYZ/LAS input: m (default), cm, mm, or metres per unit");
   app.add_option(
       "--scanner", cli.scanners,
-      "Scanner position X,Y,Z in metres (input frame); repeat for several. Overrides file poses");
+      "Scanner position X,Y,Z in metres in the loaded frame (z up, after --unit and --up-axis; "
+      "LAS less its local offset), before levelling; repeat for several. Overrides file poses");
   app.add_option("--trajectory", cli.trajectory,
                  "Scanner positions from a file: TUM 't x y z qx qy qz qw' or 'x y z' lines "
-                 "(metres, input frame); added to the others");
+                 "(metres, the loaded frame as --scanner); added to the others");
   app.add_option("--storey", cli.storey,
                  "Map only storey K (0: the lowest; see summary.json 'storeys')")
       ->check(CLI::NonNegativeNumber);
@@ -46,8 +47,10 @@ void add_pipeline_options(CLI::App& app, PipelineCli& cli) {
                "Turn the map frame about the vertical so the walls run along x and y "
                "(align_walls.enabled: true); summary.json and map.yaml say how to go back");
   app.add_option("--start", cli.start,
-                 "Route start X,Y[,DEG] in the map frame (with --goal: route outputs)");
-  app.add_option("--goal", cli.goal, "Route goal X,Y[,DEG] in the map frame (with --start)");
+                 "Route start X,Y[,DEG]: metres in the map frame (of map.yaml: levelled, turned by "
+                 "--align-walls), degrees from +x; with --goal: route outputs");
+  app.add_option("--goal", cli.goal,
+                 "Route goal X,Y[,DEG]: metres in the map frame, degrees (with --start)");
 }
 
 namespace {
