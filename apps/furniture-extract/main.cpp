@@ -29,9 +29,11 @@ int run(int argc, char** argv) {
       "  furniture-extract --print-config > my.yaml; furniture-extract -c my.yaml "
       "clouds/office/cloud.pcd -o out/my-objects   # objects.min_area_m2, crop_margin_m, ...\n"
       "  furniture-extract clouds/office/cloud.pcd --align-walls -o out/aligned   # crops too\n"
-      "Outputs: objects.json, objects.csv, objects.png, objects/object_<id>.pcd (input frame;\n"
-      "map frame with --align-walls), "
-      "layout.pgm, map.yaml, summary.json.\n"
+      "Outputs: objects.json, objects.csv, objects.png, objects/object_<id>.pcd (the loaded "
+      "frame:\n"
+      "metres, z up, as --scanner; the map frame with --align-walls), map.pgm + map.yaml + "
+      "map.png,\n"
+      "layout.pgm + layout.png, summary.json.\n"
       "Exit codes: 0 done (also with no object: an empty list), 2 bad usage or bad input, 1 other "
       "failure.");
   app::PipelineCli cli;
