@@ -136,11 +136,11 @@ TEST(PlanRoute, RefusesRotatedMapsAndFreeMinWithAYaml) {
   ASSERT_NE(rotated, yaml) << yaml;
   test::write_text(dir / "rotated.yaml", rotated);
   const std::string args = " --start 1,1,0 --goal 2,1 -o ";
-  auto r = test::run_app("plan-route", "--map " + (dir / "map.yaml").string() + args +
-                                           (dir / "ok").string());
+  auto r = test::run_app("plan-route",
+                         "--map " + (dir / "map.yaml").string() + args + (dir / "ok").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  r = test::run_app("plan-route", "--map " + (dir / "rotated.yaml").string() + args +
-                                      (dir / "o").string());
+  r = test::run_app("plan-route",
+                    "--map " + (dir / "rotated.yaml").string() + args + (dir / "o").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("rotated.yaml"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("yaw 0.5 rad is not supported"), std::string::npos) << r.err;
@@ -150,12 +150,12 @@ TEST(PlanRoute, RefusesRotatedMapsAndFreeMinWithAYaml) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--free-min is for plain PNG/PGM maps"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "o2" / "route.json"));
-  r = test::run_app("explore-sim", (dir / "map.yaml").string() + " --free-min 200 -o " +
-                                       (dir / "o3").string());
+  r = test::run_app("explore-sim",
+                    (dir / "map.yaml").string() + " --free-min 200 -o " + (dir / "o3").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--free-min is for plain PNG/PGM maps"), std::string::npos) << r.err;
-  r = test::run_app("explore-sim", (dir / "rotated.yaml").string() + " -o " +
-                                       (dir / "o4").string());
+  r = test::run_app("explore-sim",
+                    (dir / "rotated.yaml").string() + " -o " + (dir / "o4").string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("yaw 0.5 rad is not supported"), std::string::npos) << r.err;
 }
