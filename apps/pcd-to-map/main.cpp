@@ -36,8 +36,9 @@ struct StoreyWork {
 int run(int argc, char** argv) {
   CLI::App cli_app{
       "pcd-to-map: turn indoor lidar scans into a levelled room layout and a ROS navigation map.\n"
-      "Inputs: .pcd, .ply, .xyz / .txt / .csv (x y z first), .las (LAS 1.2-1.4; not .laz) or a "
-      "3DTK scan directory.\n"
+      "Inputs: .pcd, .ply, .xyz / .txt / .csv (x y z first), .las (LAS 1.2-1.4; not .laz), or "
+      "3DTK\n"
+      "(a scan directory or a .3d file).\n"
       "Outputs in DIR: map.pgm + map.yaml + map.png (the navigation map), layout.pgm + "
       "layout.png,\n"
       "objects.json, room.geojson + room.json + border.png (the room's border), rooms.geojson +\n"
