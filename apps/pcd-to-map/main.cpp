@@ -42,9 +42,9 @@ int run(int argc, char** argv) {
       "Outputs in DIR: map.pgm + map.yaml + map.png (the navigation map), layout.pgm + "
       "layout.png,\n"
       "objects.json, room.geojson + room.json + border.png (the room's border), rooms.geojson +\n"
-      "rooms.json + rooms.png (the rooms), summary.json; with --start/--goal route.json + "
-      "route.png +\n"
-      "safe.pgm + safe.yaml; several storeys: each storey's files in storey_<k>/.\n"};
+      "rooms.json + rooms.png (the rooms), summary.json, report.html (one page of the run);\n"
+      "with --start/--goal route.json + route.png + safe.pgm + safe.yaml;\n"
+      "several storeys: each storey's files in storey_<k>/.\n"};
   cli_app.footer(
       "Examples:\n"
       "  pcd-to-map clouds/office/cloud.pcd -o out\n"
