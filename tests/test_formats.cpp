@@ -412,6 +412,8 @@ INSTANTIATE_TEST_SUITE_P(
                 "key 'resolution' is not a number"},
         MapCase{"origin_two_values", replace_all(kYaml, "[0.0, 0.0, 0.0]", "[1, 2]"), kPgm,
                 "key 'origin' must be a list [x, y, yaw]"},
+        MapCase{"origin_yaw", replace_all(kYaml, "[0.0, 0.0, 0.0]", "[1, 2, 0.25]"), kPgm,
+                "key 'origin': yaw 0.25 rad is not supported (a rotated map)"},
         MapCase{"origin_infinite", replace_all(kYaml, "[0.0, 0.0, 0.0]", "[.inf, 0, 0]"), kPgm,
                 "key 'origin' is not finite"},
         MapCase{"negate_not_0_or_1", replace_all(kYaml, "negate: 0", "negate: 1e300"), kPgm,

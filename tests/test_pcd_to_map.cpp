@@ -149,6 +149,64 @@ TEST(PcdToMap, HelpAndPrintConfig) {
   EXPECT_DOUBLE_EQ(c.map.voxel.cell_m, 0.1);
 }
 
+// The help names every input kind the loader reads and every file a run writes (issue 19).
+TEST(PcdToMap, HelpListsEveryInputKindAndEveryOutput) {
+  const auto help = run_app("pcd-to-map", "--help");
+  ASSERT_EQ(help.exit_code, 0);
+  for (const char* kind : {".pcd", ".ply", ".xyz", ".txt", ".csv", ".las", "3DTK", "storey_<k>/"})
+    EXPECT_NE(help.out.find(kind), std::string::npos) << kind;
+  const fs::path dir = test::scratch_dir();
+  const auto r = run_app(
+      "pcd-to-map", room_file().string() + " --scanner 3,2.5,1.2 -q -o " + (dir / "o").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto summary = nlohmann::json::parse(test::read_text(dir / "o" / "summary.json"));
+  ASSERT_GE(summary["outputs"].size(), 10u);
+  for (const auto& f : summary["outputs"]) {
+    EXPECT_NE(help.out.find(f.get<std::string>()), std::string::npos) << f;
+    EXPECT_TRUE(fs::exists(dir / "o" / f.get<std::string>())) << f;
+  }
+  for (const char* f : {"route.json", "route.png", "safe.pgm", "safe.yaml"})
+    EXPECT_NE(help.out.find(f), std::string::npos) << f;
+}
+
+// furniture-extract plans no route: --start / --goal are refused naming the apps that plan,
+// exit 2, nothing written (they were accepted and ignored).
+TEST(FurnitureExtract, RefusesStartAndGoal) {
+  const fs::path dir = test::scratch_dir();
+  for (const std::string opt : {"--start 1,1 --goal 2,2", "--goal 2,2"}) {
+    const auto r = run_app("furniture-extract",
+                           room_file().string() + " " + opt + " -o " + (dir / "o").string());
+    EXPECT_EQ(r.exit_code, 2) << opt;
+    EXPECT_NE(r.err.find("furniture-extract plans no route"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("plan-route --map"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("pcd-to-map CLOUD --start"), std::string::npos) << r.err;
+    EXPECT_TRUE(empty_or_missing(dir / "o"));
+  }
+}
+
+// Options that cannot act on the inputs are refused (exit 2, nothing written): --scans without a
+// 3DTK input; --unit / --up-axis when every input is 3DTK (converted by its own convention).
+TEST(PcdToMap, RefusesOptionsThatCannotActOnTheInputs) {
+  const fs::path dir = test::scratch_dir();
+  auto r = run_app("pcd-to-map", room_file().string() + " --scans 0-2 -o " + (dir / "a").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--scans 0-2: selects scans of a 3DTK scan directory"), std::string::npos)
+      << r.err;
+  EXPECT_TRUE(empty_or_missing(dir / "a"));
+  fs::create_directories(dir / "scans");
+  test::write_text(dir / "scans" / "scan000.3d", "0 0 0\n");
+  for (const std::string opt : {"--unit mm", "--up-axis y"}) {
+    r = run_app("pcd-to-map", (dir / "scans").string() + " " + opt + " -o " + (dir / "b").string());
+    EXPECT_EQ(r.exit_code, 2) << opt;
+    EXPECT_NE(r.err.find(opt.substr(0, opt.find(' ')) + ": 3DTK scans are converted"),
+              std::string::npos)
+        << r.err;
+    EXPECT_TRUE(empty_or_missing(dir / "b"));
+  }
+  // --print-config alone is not refused.
+  EXPECT_EQ(run_app("pcd-to-map", "--scans 0-2 --print-config").exit_code, 0);
+}
+
 TEST(PcdToMap, DocumentedDefaultsAreTheCodeDefaults) {
   app::PipelineConfig from_file;
   app::merge_config_file(from_file, std::string(INDOORMAP_SOURCE_DIR) + "/config/default.yaml");

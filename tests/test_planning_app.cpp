@@ -122,6 +122,44 @@ TEST(PlanRoute, OutputsErrorsAndExitCodes) {
   EXPECT_NE(r.out.find("Examples"), std::string::npos);
 }
 
+// Options that cannot act are refused, not ignored (issue 19): a rotated map (origin yaw != 0,
+// whose safe.yaml would come out with yaw 0) and --free-min with a map YAML (its thresholds
+// decide). Both exit 2 naming the problem, nothing written; the same map with yaw 0 plans.
+TEST(PlanRoute, RefusesRotatedMapsAndFreeMinWithAYaml) {
+  const auto dir = test::scratch_dir();
+  Grid<Cell> room(60, 40, Cell::kFree);
+  for (int c = 0; c < 60; ++c) room.at(c, 0) = room.at(c, 39) = Cell::kWall;
+  for (int r = 0; r < 40; ++r) room.at(0, r) = room.at(59, r) = Cell::kWall;
+  formats::write_ros_map(dir, "map", room, GridGeometry({0, 0}, 0.05, 60, 40));
+  const std::string yaml = test::read_text(dir / "map.yaml");
+  const std::string rotated = test::replace_all(yaml, ", 0.0]", ", 0.5]");
+  ASSERT_NE(rotated, yaml) << yaml;
+  test::write_text(dir / "rotated.yaml", rotated);
+  const std::string args = " --start 1,1,0 --goal 2,1 -o ";
+  auto r = test::run_app("plan-route",
+                         "--map " + (dir / "map.yaml").string() + args + (dir / "ok").string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = test::run_app("plan-route",
+                    "--map " + (dir / "rotated.yaml").string() + args + (dir / "o").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("rotated.yaml"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("yaw 0.5 rad is not supported"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "o" / "safe.yaml"));
+  r = test::run_app("plan-route", "--map " + (dir / "map.yaml").string() + " --free-min 200" +
+                                      args + (dir / "o2").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--free-min is for plain PNG/PGM maps"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "o2" / "route.json"));
+  r = test::run_app("explore-sim",
+                    (dir / "map.yaml").string() + " --free-min 200 -o " + (dir / "o3").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--free-min is for plain PNG/PGM maps"), std::string::npos) << r.err;
+  r = test::run_app("explore-sim",
+                    (dir / "rotated.yaml").string() + " -o " + (dir / "o4").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("yaw 0.5 rad is not supported"), std::string::npos) << r.err;
+}
+
 TEST(PlanConfig, MalformedFilesAreTypedErrorsNamingFileAndLine) {
   // The planner config shares the pipeline config's checks (apps/common/config_reader.hpp): a list
   // used as a key or an unknown key is an InputError, never an untyped yaml-cpp exception.

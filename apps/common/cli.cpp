@@ -1,7 +1,9 @@
 #include "cli.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <new>
@@ -26,17 +28,22 @@ void add_pipeline_options(CLI::App& app, PipelineCli& cli) {
                "Print the effective parameters as YAML and exit");
   app.add_flag("-q,--quiet", cli.quiet,
                "No progress or run report on stderr (warnings still shown)");
-  app.add_option("--scans", cli.scans, "3DTK: scan numbers to read, e.g. 0-8 or 3");
-  app.add_option("--up-axis", cli.up_axis, "Up axis of PCD/PLY/XYZ input: z (default) or y")
+  app.add_option("--scans", cli.scans,
+                 "3DTK: scan numbers to read, e.g. 0-8 or 3 (refused without a 3DTK input)");
+  app.add_option("--up-axis", cli.up_axis,
+                 "Up axis of PCD/PLY/XYZ/LAS input: z (default) or y (3DTK: its own)")
       ->check(CLI::IsMember({"z", "y"}));
-  app.add_option("--unit", cli.unit,
-                 "Unit of PCD/PLY/XYZ input: m (default), cm, mm, or metres per unit");
+  app.add_option(
+      "--unit", cli.unit,
+      "Unit of PCD/PLY/XYZ/LAS input: m (default), cm, mm, or metres per unit (3DTK: cm, "
+      "its own)");
   app.add_option(
       "--scanner", cli.scanners,
-      "Scanner position X,Y,Z in metres (input frame); repeat for several. Overrides file poses");
+      "Scanner position X,Y,Z in metres in the loaded frame (z up, after --unit and --up-axis; "
+      "LAS less its local offset), before levelling; repeat for several. Overrides file poses");
   app.add_option("--trajectory", cli.trajectory,
                  "Scanner positions from a file: TUM 't x y z qx qy qz qw' or 'x y z' lines "
-                 "(metres, input frame); added to the others");
+                 "(metres, the loaded frame as --scanner); added to the others");
   app.add_option("--storey", cli.storey,
                  "Map only storey K (0: the lowest; see summary.json 'storeys')")
       ->check(CLI::NonNegativeNumber);
@@ -46,8 +53,10 @@ void add_pipeline_options(CLI::App& app, PipelineCli& cli) {
                "Turn the map frame about the vertical so the walls run along x and y "
                "(align_walls.enabled: true); summary.json and map.yaml say how to go back");
   app.add_option("--start", cli.start,
-                 "Route start X,Y[,DEG] in the map frame (with --goal: route outputs)");
-  app.add_option("--goal", cli.goal, "Route goal X,Y[,DEG] in the map frame (with --start)");
+                 "Route start X,Y[,DEG]: metres in the map frame (of map.yaml: levelled, turned by "
+                 "--align-walls), degrees from +x; with --goal: route outputs");
+  app.add_option("--goal", cli.goal,
+                 "Route goal X,Y[,DEG]: metres in the map frame, degrees (with --start)");
 }
 
 namespace {
@@ -81,6 +90,28 @@ planning::Pose2 parse_pose(const std::string& text, const std::string& option) {
   if (v.size() == 3) p.heading_deg = v[2];
   return p;
 }
+
+namespace {
+
+bool is_3dtk_input(const std::string& path) {
+  return std::filesystem::is_directory(path) || std::filesystem::path(path).extension() == ".3d";
+}
+
+// Options that cannot act on the given inputs are refused rather than ignored (issue 19).
+void check_input_options(const PipelineCli& cli) {
+  if (cli.inputs.empty()) return;  // --print-config alone
+  const auto n3dtk = std::count_if(cli.inputs.begin(), cli.inputs.end(), is_3dtk_input);
+  if (!cli.scans.empty() && n3dtk == 0)
+    throw UsageError("--scans " + cli.scans +
+                     ": selects scans of a 3DTK scan directory, and no input is one");
+  if ((!cli.unit.empty() || !cli.up_axis.empty()) &&
+      n3dtk == static_cast<std::ptrdiff_t>(cli.inputs.size()))
+    throw UsageError(std::string(!cli.unit.empty() ? "--unit" : "--up-axis") +
+                     ": 3DTK scans are converted by their own convention (cm, y up, left-handed); "
+                     "the option applies to PCD / PLY / XYZ / LAS inputs, and every input is 3DTK");
+}
+
+}  // namespace
 
 PipelineConfig resolve_config(const PipelineCli& cli) {
   PipelineConfig c;
@@ -129,6 +160,7 @@ PipelineConfig resolve_config(const PipelineCli& cli) {
   if (cli.no_level) c.map.level.enabled = false;
   if (cli.align_walls) c.map.align_walls.enabled = true;
   if (cli.start.empty() != cli.goal.empty()) throw UsageError("--start and --goal go together");
+  check_input_options(cli);
   validate(c);
   return c;
 }

@@ -84,14 +84,26 @@ formats::RosMapMeta read_map_yaml(const fs::path& yaml_path) {
 }
 
 formats::RosMap read_ros_map(const fs::path& yaml_path, std::int64_t max_cells) {
-  return formats::decode_ros_map(read_map_yaml(yaml_path), yaml_path, max_cells);
+  const formats::RosMapMeta meta = read_map_yaml(yaml_path);
+  // The grid is axis-aligned in the map frame; a rotated map would be read misplaced and its
+  // outputs (safe.yaml, ...) written with yaw 0: refused instead of carried through.
+  if (meta.origin[2] != 0.0)
+    throw InputError(yaml_path.string(),
+                     "key 'origin': yaw " + shortest(meta.origin[2]) +
+                         " rad is not supported (a rotated map); only maps with origin yaw 0 "
+                         "are read: rotate the image so its rows run along the map's x axis");
+  return formats::decode_ros_map(meta, yaml_path, max_cells);
 }
 
-formats::RosMap load_map_argument(const std::string& path, double resolution_m, int free_min) {
+formats::RosMap load_map_argument(const std::string& path, double resolution_m, int free_min,
+                                  bool free_min_given) {
   const std::string ext = fs::path(path).extension().string();
   if (ext == ".yaml" || ext == ".yml") {
     if (resolution_m != 0.0)
       throw UsageError("--resolution is for plain PNG/PGM maps; " + path + " is a map YAML");
+    if (free_min_given)
+      throw UsageError("--free-min is for plain PNG/PGM maps; " + path +
+                       " is a map YAML (its free_thresh and occupied_thresh decide)");
     return read_ros_map(path);
   }
   if (resolution_m == 0.0)

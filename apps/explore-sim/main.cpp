@@ -46,6 +46,7 @@ struct Args {
   std::string map_path, start_s, out_dir, config_file;
   double resolution = 0.0;
   int free_min = 250;
+  bool free_min_given = false;  ///< --free-min on the command line (refused with a map YAML)
   std::optional<std::uint32_t> seed;
   bool print_config = false, quiet = false;
   std::optional<int> exit_code;
@@ -73,9 +74,12 @@ Args parse_args(int argc, char** argv) {
   cli_app.add_option("--resolution", a.resolution, "Metres per pixel of a plain PNG/PGM map");
   cli_app
       .add_option("--free-min", a.free_min,
-                  "Plain maps: grey levels >= this are free (default 250)")
+                  "Plain PNG/PGM maps: grey levels >= this are free (default 250; refused "
+                  "with a map YAML, whose thresholds decide)")
       ->check(CLI::Range(0, 255));
-  cli_app.add_option("--start", a.start_s, "Start X,Y[,DEG] in map metres (default: see below)");
+  cli_app.add_option("--start", a.start_s,
+                     "Start X,Y[,DEG]: metres in the map frame (a plain image: origin at its "
+                     "lower-left corner), degrees (default: see below)");
   cli_app.add_option("--seed", a.seed, "Seed of the laser noise (overrides run.seed)")
       ->check(CLI::NonNegativeNumber);  // "-1" would wrap to 2^32-1
   cli_app.add_option("-o,--out", a.out_dir, "Output directory (created if missing)");
@@ -86,6 +90,7 @@ Args parse_args(int argc, char** argv) {
   cli_app.add_flag("-q,--quiet", a.quiet, "No progress messages on stderr");
   try {
     cli_app.parse(argc, argv);
+    a.free_min_given = cli_app.count("--free-min") > 0;
   } catch (const CLI::ParseError& e) {
     a.exit_code = cli_app.exit(e) == 0 ? 0 : static_cast<int>(ExitCode::kBadInput);
   }
@@ -138,7 +143,8 @@ int run(int argc, char** argv) {
   if (a.map_path.empty()) throw UsageError("no map given: explore-sim MAP -o DIR (see --help)");
   if (a.out_dir.empty()) throw UsageError("no output directory given: use -o DIR");
   auto t0 = std::chrono::steady_clock::now();
-  formats::RosMap map = app::load_map_argument(a.map_path, a.resolution, a.free_min);
+  formats::RosMap map =
+      app::load_map_argument(a.map_path, a.resolution, a.free_min, a.free_min_given);
   if (cfg.unknown_is_obstacle)
     for (Cell& c : map.cells.data)
       if (c == Cell::kUnknown) c = Cell::kWall;

@@ -26,15 +26,30 @@ int run(int argc, char** argv) {
       "Examples:\n"
       "  furniture-extract clouds/office/cloud.pcd -o out/objects\n"
       "  furniture-extract ../shared/data/jacobs-thermocolorlab -o out/jacobs-objects\n"
-      "  furniture-extract room.ply -c my.yaml -o out   # objects.min_area_m2, crop_margin_m, ...\n"
+      "  furniture-extract --print-config > my.yaml; furniture-extract -c my.yaml "
+      "clouds/office/cloud.pcd -o out/my-objects   # objects.min_area_m2, crop_margin_m, ...\n"
       "  furniture-extract clouds/office/cloud.pcd --align-walls -o out/aligned   # crops too\n"
-      "Outputs: objects.json, objects.csv, objects.png, objects/object_<id>.pcd (input frame;\n"
-      "map frame with --align-walls), "
-      "layout.pgm, map.yaml, summary.json.\n"
+      "Outputs: objects.json, objects.csv, objects.png, objects/object_<id>.pcd (the loaded "
+      "frame:\n"
+      "metres, z up, as --scanner; the map frame with --align-walls), map.pgm + map.yaml + "
+      "map.png,\n"
+      "layout.pgm + layout.png, summary.json.\n"
       "Exit codes: 0 done (also with no object: an empty list), 2 bad usage or bad input, 1 other "
       "failure.");
   app::PipelineCli cli;
   app::add_pipeline_options(cli_app, cli);
+  // --start / --goal plan a route, which this app does not: refused rather than ignored.
+  const std::string no_route =
+      "refused: furniture-extract plans no route (use plan-route --map OUT/map.yaml, or "
+      "pcd-to-map --start --goal)";
+  cli_app.get_option("--start")->description(no_route);
+  cli_app.get_option("--goal")->description(no_route);
+  cli_app.parse_complete_callback([&cli] {
+    if (!cli.start.empty() || !cli.goal.empty())
+      throw UsageError(
+          "--start / --goal: furniture-extract plans no route; plan one with plan-route --map "
+          "OUT/map.yaml --start X,Y --goal X,Y, or with pcd-to-map CLOUD --start X,Y --goal X,Y");
+  });
   int code = 0;
   auto setup = app::setup_pipeline_app(cli_app, cli, argc, argv, &code);
   if (!setup) return code;

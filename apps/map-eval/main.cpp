@@ -122,8 +122,8 @@ int run(int argc, char** argv) {
   app.footer(
       "Examples:\n"
       "  map-eval --truth clouds/office/ground_truth.json --result out\n"
-      "  map-eval --truth /tmp/scene7/ground_truth.json --result /tmp/scene7-out -o /tmp/eval7 "
-      "--min-iou 0.4\n"
+      "  map-eval --truth clouds/office/ground_truth.json --result out -o out/eval --min-iou 0.4\n"
+      "(out: pcd-to-map clouds/office/cloud.pcd -o out.)\n"
       "Reads from RESULT: layout.pgm (+ layout.yaml or map.yaml), objects.json, room.geojson, "
       "map.pgm / map.yaml,\n"
       "and storey_<k>/ for a multi-storey truth; each missing file is reported as \"missing\" "
@@ -147,7 +147,7 @@ int run(int argc, char** argv) {
                  "Recall counts truth objects of at least this area, m^2 (default 0.1)")
       ->check(CLI::Range(0.0, 100.0));
   app.add_option("--robot-width-m", robot_width,
-                 "Robot diameter for the door and reachability metrics (default 0.4)")
+                 "Robot diameter in metres for the door and reachability metrics (default 0.4)")
       ->check(CLI::Range(0.01, 5.0));
   app.add_flag("--include-hanging", include_hanging, "Also count ceiling lamps as objects to find");
   app.add_flag("--print-config", print_config, "Print the effective parameters as YAML and exit");

@@ -35,6 +35,7 @@ struct Args {
   std::string map_path, start_s, goal_s, out_dir, config_file;
   double resolution = 0.0;
   int free_min = 250;
+  bool free_min_given = false;  ///< --free-min on the command line (refused with a map YAML)
   bool print_config = false;
   bool quiet = false;
   std::optional<int> exit_code;
@@ -48,12 +49,20 @@ Args parse_args(int argc, char** argv) {
       "directory.\n"};
   cli_app.footer(
       "Examples:\n"
-      "  plan-route --map out/jacobs/map.yaml --start 1.0,2.0,90 --goal 4.5,3.0 -o out/route\n"
-      "  plan-route --map building.png --resolution 0.05 --start 10,5 --goal 30,12,180 -o out/r\n"
-      "  plan-route --print-config > robot.yaml; plan-route -c robot.yaml --map map.yaml ...\n"
-      "Headings: degrees counter-clockwise from the map's +x axis. Without one, the robot is taken "
-      "to\n"
-      "face its first move.\n"
+      "  plan-route --map out/map.yaml --start 1.6,3.0,0 --goal 4.8,4.5 -o out/route\n"
+      "  plan-route --map out/jacobs/map.yaml --start -0.1,0.0,90 --goal 2.0,-0.5 -o "
+      "out/jacobs-route\n"
+      "  plan-route --map out/map.pgm --resolution 0.05 --start 1.65,5.25 --goal 4.85,6.75,180 -o "
+      "out/r   # as a plain image\n"
+      "  plan-route --print-config > robot.yaml; plan-route -c robot.yaml --map out/map.yaml "
+      "--start 1.6,3.0 --goal 3.2,0.7 -o out/route2\n"
+      "(out/map.yaml, out/jacobs/map.yaml: pcd-to-map --help's examples.)\n"
+      "Frames: --start/--goal in metres in the map's frame: a map YAML's (its origin is the "
+      "lower-left\n"
+      "pixel's corner; a rotated map, origin yaw != 0, is refused), a plain image's origin at its\n"
+      "lower-left corner. Headings: degrees counter-clockwise from the map's +x axis. Without "
+      "one,\n"
+      "the robot is taken to face its first move.\n"
       "Exit codes: 0 route found, 2 bad usage or bad input (e.g. start in the unsafe zone), 3 no "
       "route,\n"
       "1 other failure.");
@@ -63,11 +72,14 @@ Args parse_args(int argc, char** argv) {
   cli_app.add_option("--resolution", a.resolution, "Metres per pixel of a plain PNG/PGM map");
   cli_app
       .add_option("--free-min", a.free_min,
-                  "Plain maps: grey levels >= this are free (default 250)")
+                  "Plain PNG/PGM maps: grey levels >= this are free (default 250; refused "
+                  "with a map YAML, whose thresholds decide)")
       ->check(CLI::Range(0, 255));
-  cli_app.add_option("--start", a.start_s,
-                     "Start X,Y[,DEG] in map metres (DEG: the robot's heading)");
-  cli_app.add_option("--goal", a.goal_s, "Goal X,Y[,DEG] in map metres (DEG: final heading)");
+  cli_app.add_option(
+      "--start", a.start_s,
+      "Start X,Y[,DEG]: metres in the map frame, DEG the robot's heading in degrees");
+  cli_app.add_option("--goal", a.goal_s,
+                     "Goal X,Y[,DEG]: metres in the map frame, DEG the final heading in degrees");
   cli_app.add_option("-o,--out", a.out_dir, "Output directory (created if missing)");
   cli_app.add_option("-c,--config", a.config_file,
                      "YAML robot and planner parameters (config/plan-route.yaml)");
@@ -76,6 +88,7 @@ Args parse_args(int argc, char** argv) {
   cli_app.add_flag("-q,--quiet", a.quiet, "No progress or run report on stderr (errors stay)");
   try {
     cli_app.parse(argc, argv);
+    a.free_min_given = cli_app.count("--free-min") > 0;
   } catch (const CLI::ParseError& e) {
     a.exit_code = cli_app.exit(e) == 0 ? 0 : static_cast<int>(ExitCode::kBadInput);
   }
@@ -103,7 +116,8 @@ int run(int argc, char** argv) {
   ensure_writable_dir(out);
 
   auto t0 = std::chrono::steady_clock::now();
-  const formats::RosMap map = app::load_map_argument(a.map_path, a.resolution, a.free_min);
+  const formats::RosMap map =
+      app::load_map_argument(a.map_path, a.resolution, a.free_min, a.free_min_given);
   const double load_ms = ms_since(t0);
 
   t0 = std::chrono::steady_clock::now();

@@ -53,9 +53,10 @@ Args parse_args(int argc, char** argv) {
   app.footer(
       "Examples:\n"
       "  scene-sim scenes/office.yaml -o clouds/office\n"
-      "  scene-sim --random --seed 7 --rooms 3 -o /tmp/scene7 --3dtk --sector-deg 40\n"
-      "  scene-sim --random --seed 3 --rooms 8 --storeys 2 -o /tmp/tower --3dtk\n"
-      "  scene-sim --random --seed 4 --rooms 4 --mobile -o /tmp/walk\n"
+      "  scene-sim --random --seed 7 --rooms 3 --step-deg 0.5 -o out/scene7 --3dtk --sector-deg "
+      "40\n"
+      "  scene-sim --random --seed 3 --rooms 4 --storeys 2 --step-deg 0.5 -o out/tower --3dtk\n"
+      "  scene-sim --random --seed 4 --rooms 2 --mobile -o out/walk\n"
       "  scene-sim scenes/office.yaml --print-config\n"
       "Outputs in DIR: cloud.pcd, ground_truth.json, ground_truth_layout.{pgm,png,yaml}, "
       "ground_truth_seen.{pgm,yaml},\n"

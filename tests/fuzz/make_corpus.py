@@ -153,6 +153,94 @@ put("tdtk", "frames_16.bin", SEP.join([scan.encode(), b"", scan.encode(), b"1 0 
 put("tdtk", "empty_scan.bin", "")
 put("tdtk", "malformed_scan.bin", "1 2 3\nx y z\n")
 
+# ---------------------------------------------------------------- LAS
+LAS_REC = [20, 28, 26, 34, 57, 63, 30, 36, 38, 59, 67]  # minimum record bytes, formats 0-10
+LAS_BLOCK = {2: 227, 3: 235, 4: 375}
+
+
+def las(minor=2, fmt=0, pts=pts, scale=0.001, offset=(0.0, 0.0, 0.0), extra=0, vlrs=b"",
+        vlr_count=None, legacy=True, wide=None, count=None, box=None, header_bytes=None,
+        point_offset=None, fmt_byte=None):
+    """A LAS file (the layout of lib/cloud_io/src/las_write.cpp, plus VLRs and lies)."""
+    block = LAS_BLOCK[minor]
+    rec = LAS_REC[fmt] + extra
+    body = b""
+    for p in pts:
+        q = [int(round((p[a] - offset[a]) / scale)) for a in range(3)]
+        r = bytearray(rec)
+        r[0:12] = struct.pack("<iii", *q)
+        r[14] = 0x11 if fmt >= 6 else 0x09
+        body += bytes(r)
+    n = len(pts) if count is None else count
+    h = bytearray(block)
+    h[0:4] = b"LASF"
+    h[24], h[25] = 1, minor
+    h[26:35] = b"indoormap"
+    struct.pack_into("<H", h, 94, block if header_bytes is None else header_bytes)
+    struct.pack_into("<I", h, 96, block + len(vlrs) if point_offset is None else point_offset)
+    struct.pack_into("<I", h, 100, (len(vlrs) // 54 if vlrs else 0) if vlr_count is None else vlr_count)
+    h[104] = fmt if fmt_byte is None else fmt_byte
+    struct.pack_into("<H", h, 105, rec)
+    if legacy:
+        struct.pack_into("<II", h, 107, n & 0xFFFFFFFF, n & 0xFFFFFFFF)
+    lo = [min(p[a] for p in pts) for a in range(3)] if pts else [0.0] * 3
+    hi = [max(p[a] for p in pts) for a in range(3)] if pts else [0.0] * 3
+    if box is not None:
+        lo, hi = box
+    struct.pack_into("<3d", h, 131, scale, scale, scale)
+    struct.pack_into("<3d", h, 155, *offset)
+    struct.pack_into("<6d", h, 179, hi[0], lo[0], hi[1], lo[1], hi[2], lo[2])
+    if minor == 4:
+        struct.pack_into("<QQ", h, 247, n if wide is None else wide, n)
+    return bytes(h) + vlrs + body
+
+
+def vlr(user=b"LASF_Projection", record_id=34735, payload=b"\x01\x00\x01\x00\x00\x00\x00\x00"):
+    return (struct.pack("<H", 0) + user.ljust(16, b"\0") + struct.pack("<HH", record_id, len(payload))
+            + b"description".ljust(32, b"\0") + payload)
+
+
+for fmt in range(6):
+    put("las", f"v12_format{fmt}.las", las(2, fmt))
+put("las", "v13_format1.las", las(3, 1))
+put("las", "v13_format4.las", las(3, 4))
+for fmt in range(11):
+    put("las", f"v14_format{fmt}.las", las(4, fmt, legacy=fmt <= 5))
+put("las", "v14_wide_count_only.las", las(4, 1, legacy=False))
+put("las", "v12_extra_bytes.las", las(2, 3, extra=7))
+put("las", "v14_extra_bytes.las", las(4, 6, extra=13, legacy=False))
+put("las", "v12_vlr.las", las(2, 0, vlrs=vlr()))
+put("las", "v14_two_vlrs.las", las(4, 7, vlrs=vlr() + vlr(b"LASF_Spec", 4, b"x" * 20), legacy=False))
+utm = [(500000.0 + x, 5000000.0 + y, 100.0 + z) for x, y, z in pts]
+put("las", "utm_offset.las", las(2, 1, pts=utm, offset=(500000.0, 5000000.0, 0.0)))
+put("las", "utm_box_lies.las", las(2, 1, pts=utm, offset=(0.0, 0.0, 0.0), scale=0.01,
+                                  box=([1e300, -1e300, 0.0], [-1e300, 1e300, 0.0])))
+put("las", "box_nan.las", las(2, 0, box=([float("nan")] * 3, [float("inf")] * 3)))
+put("las", "scale_tiny.las", las(2, 0, pts=[(5e-300, 0.0, 1e-299)], scale=1e-300))
+put("las", "zero_points.las", las(2, 0, pts=[]))
+# broken
+put("las", "empty.las", b"")
+put("las", "signature_only.las", b"LASF")
+put("las", "header_truncated.las", las(2, 0)[:200])
+put("las", "v14_header_truncated.las", las(4, 0)[:300])
+put("las", "version_1_5.las", las(2, 0)[:25] + b"\x05" + las(2, 0)[26:])
+put("las", "points_truncated.las", las(2, 1)[:-10])
+put("las", "count_lies.las", las(2, 0, count=1000000))
+put("las", "v14_counts_disagree.las", las(4, 1, wide=7))
+put("las", "v14_count_huge.las", las(4, 6, legacy=False, wide=2 ** 63))
+put("las", "header_size_small.las", las(2, 0, header_bytes=100))
+put("las", "point_offset_past_end.las", las(2, 0, point_offset=1 << 30))
+put("las", "point_offset_in_header.las", las(2, 0, point_offset=10))
+put("las", "format_11.las", las(2, 0, fmt_byte=11))
+put("las", "laz_format_byte.las", las(2, 1, fmt_byte=0x81))
+put("las", "laszip_vlr.las", las(2, 1, vlrs=vlr(b"laszip encoded", 22204, b"\0" * 34)))
+put("las", "vlr_count_lies.las", las(2, 0, vlrs=vlr(), vlr_count=1000))
+put("las", "vlr_length_lies.las", las(2, 0, vlrs=vlr()[:-8], point_offset=227 + 54))
+put("las", "record_short.las", las(2, 3)[:105] + struct.pack("<H", 20) + las(2, 3)[107:])
+put("las", "scale_zero.las", las(2, 0)[:131] + struct.pack("<d", 0.0) + las(2, 0)[139:])
+put("las", "offset_nan.las", las(2, 0)[:155] + struct.pack("<d", float("nan")) + las(2, 0)[163:])
+
+
 # ---------------------------------------------------------------- ROS map
 def pgm(w, h, pixels=None, maxval=255):
     if pixels is None:
