@@ -9,7 +9,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(cmake g++ ninja-build pkg-config libpcl-dev libeigen3-dev libopencv-dev libyaml-cpp-dev
-  nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev lld)
+  nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev lld
+  pybind11-dev python3-dev python3-numpy parallel)
 # The sanitizer + fuzz build (-DINDOORMAP_FUZZ=ON: ./test.sh --sanitize, scripts/fuzz.sh) needs
 # clang and its sanitizer / libFuzzer runtimes.
 fuzz=0

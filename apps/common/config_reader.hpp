@@ -53,6 +53,11 @@ YAML::Node load_yaml_file(const std::string& path, const std::string& role = "th
 YAML::Node load_config_tree(const std::string& path,
                             const std::map<std::string, std::set<std::string>>& known);
 
+/// load_config_tree's checks on a tree built in memory (the Python bindings' params dict): `name`
+/// stands for the file in the errors ("params: unknown key 'voxel.cel_m'"). A null root passes.
+void check_config_tree(const YAML::Node& root, const std::string& name,
+                       const std::map<std::string, std::set<std::string>>& known);
+
 /// Typed values out of one YAML document. Every error is InputError(file, "key 'K': problem",
 /// line of the node).
 class ConfigReader {
@@ -162,9 +167,15 @@ std::map<std::string, std::set<std::string>> config_keys(Table&& table) {
 /// Throws InputError naming the file, key and line.
 template <class Table>
 void read_config_file(const std::string& path, Table&& table) {
-  const YAML::Node root = load_config_tree(path, config_keys(table));
+  read_config_tree(load_config_tree(path, config_keys(table)), path, table);
+}
+
+/// Reads an already checked tree (load_config_tree, check_config_tree) over the table's fields;
+/// errors name `name` as their file.
+template <class Table>
+void read_config_tree(const YAML::Node& root, const std::string& name, Table&& table) {
   if (root.IsNull()) return;
-  const ConfigReader rd(path);
+  const ConfigReader rd(name);
   table([&](const char* s, const char* k, auto&& v) {
     const YAML::Node sec = *s ? root[s] : root;
     if (!sec) return;

@@ -1,0 +1,113 @@
+#!/usr/bin/env python3
+"""The index of a batch run (docs/batch.md): OUTROOT/index.csv and OUTROOT/index.json.
+
+Usage: batch_index.py OUTROOT
+
+Reads OUTROOT/status/*.tsv (one per input, written by `scripts/batch.sh --run-one`: K, input
+line, output directory name, exit code, seconds, log) and, for the inputs that succeeded, the main
+figures of their summary.json (the first mapped storey's when the cloud has several). Writes both
+files atomically (temporary name, then rename). Exit code: 0 when every input listed succeeded,
+1 when one failed, 2 when there is no status at all.
+"""
+import csv
+import io
+import json
+import os
+import sys
+
+COLUMNS = ["k", "input", "outdir", "status", "exit_code", "seconds", "error", "points_kept",
+           "grid_cells", "floor_z_m", "room_height_m", "storeys", "objects", "rooms",
+           "room_closed", "room_area_m2", "warnings", "log"]
+
+
+def figures(outdir):
+    """Main figures of outdir/summary.json (or of its first mapped storey's)."""
+    path = os.path.join(outdir, "summary.json")
+    with open(path, encoding="utf-8") as f:
+        s = json.load(f)
+    storeys = s.get("storeys", [])
+    if "points" not in s:  # several storeys: OUTROOT/storey_<k>/summary.json
+        mapped = [st for st in storeys if st.get("mapped")]
+        with open(os.path.join(outdir, mapped[0]["dir"], "summary.json"), encoding="utf-8") as f:
+            s = json.load(f)
+    border = s.get("border") or {}
+    return {
+        "points_kept": s["points"]["kept"],
+        "grid_cells": "x".join(str(v) for v in s["grid"]["size_cells"][:2]),
+        "floor_z_m": round(s["floor_z_m"], 3),
+        "room_height_m": round(s["room_height_m"], 3),
+        "storeys": max(1, len(storeys)),
+        "objects": (s.get("objects") or {}).get("count"),
+        "rooms": (s.get("rooms") or {}).get("count"),
+        "room_closed": border.get("closed"),
+        "room_area_m2": round(border["area_m2"], 2) if border.get("closed") else None,
+        "warnings": len(s.get("warnings", [])),
+    }
+
+
+def last_line(path):
+    try:
+        with open(path, encoding="utf-8", errors="replace") as f:
+            lines = [l.strip() for l in f if l.strip()]
+        return lines[-1] if lines else ""
+    except OSError:
+        return ""
+
+
+def row_of(outroot, fields):
+    k, line, name, code, secs, log = fields
+    row = {c: None for c in COLUMNS}
+    row.update(k=int(k), input=line, outdir=name, exit_code=int(code), seconds=float(secs), log=log)
+    row["status"] = "ok" if row["exit_code"] == 0 else "failed"
+    if row["exit_code"] == 0:
+        try:
+            row.update(figures(os.path.join(outroot, name)))
+        except (OSError, ValueError, KeyError, IndexError, TypeError) as e:
+            row["status"], row["error"] = "failed", f"summary.json unreadable: {e}"
+    else:
+        row["error"] = last_line(os.path.join(outroot, log))
+    return row
+
+
+def write_atomic(path, text):
+    tmp = path + ".tmp"
+    with open(tmp, "w", encoding="utf-8", newline="") as f:
+        f.write(text)
+    os.replace(tmp, path)
+
+
+def main():
+    if len(sys.argv) != 2:
+        print(__doc__, file=sys.stderr)
+        return 2
+    outroot = sys.argv[1]
+    status = os.path.join(outroot, "status")
+    names = sorted(n for n in os.listdir(status) if n.endswith(".tsv")) if os.path.isdir(status) else []
+    if not names:
+        print(f"batch_index.py: no status in {status}: nothing ran", file=sys.stderr)
+        return 2
+    rows = []
+    for n in names:
+        with open(os.path.join(status, n), encoding="utf-8") as f:
+            fields = f.read().rstrip("\n").split("\t")
+        rows.append(row_of(outroot, fields))
+    rows.sort(key=lambda r: r["k"])
+    failed = [r for r in rows if r["status"] != "ok"]
+    write_atomic(os.path.join(outroot, "index.json"), json.dumps(
+        {"inputs": len(rows), "ok": len(rows) - len(failed), "failed": len(failed), "rows": rows},
+        indent=2) + "\n")
+    buf = io.StringIO()
+    w = csv.DictWriter(buf, fieldnames=COLUMNS, lineterminator="\n")
+    w.writeheader()
+    for r in rows:
+        w.writerow({c: "" if r[c] is None else r[c] for c in COLUMNS})
+    write_atomic(os.path.join(outroot, "index.csv"), buf.getvalue())
+    print(f"batch: {len(rows)} inputs, {len(rows) - len(failed)} done, {len(failed)} failed; "
+          f"index: {os.path.join(outroot, 'index.csv')}, index.json", file=sys.stderr)
+    for r in failed:
+        print(f"batch: failed: {r['input']} (exit {r['exit_code']}): {r['error']}", file=sys.stderr)
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
