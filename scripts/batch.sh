@@ -67,6 +67,7 @@ run_one() {
   printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$k" "$line" "$name" "$rc" "$secs" "logs/$name.log" \
     >"$outroot/status/$name.tsv.tmp" && mv "$outroot/status/$name.tsv.tmp" "$outroot/status/$name.tsv"
   if [ $rc -ne 0 ]; then
+    rmdir "$dir" 2>/dev/null  # pcd-to-map made it before reading: a failure leaves it empty
     echo "batch.sh: input $k ($line) failed, exit $rc: $(tail -n 1 "$log")" >&2
   fi
   return $rc

@@ -46,9 +46,12 @@ def figures(outdir):
 
 
 def last_line(path):
+    """The last line of a log that says something."""
     try:
         with open(path, encoding="utf-8", errors="replace") as f:
-            lines = [l.strip() for l in f if l.strip()]
+            # CLI11's usage errors end with a pointer to --help: the line before it says what.
+            lines = [l.strip() for l in f
+                     if l.strip() and l.strip() != "Run with --help for more information."]
         return lines[-1] if lines else ""
     except OSError:
         return ""
@@ -67,6 +70,15 @@ def row_of(outroot, fields):
     else:
         row["error"] = last_line(os.path.join(outroot, log))
     return row
+
+
+def csv_cell(value):
+    """None as an empty cell, booleans as JSON spells them."""
+    if value is None:
+        return ""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    return value
 
 
 def write_atomic(path, text):
@@ -100,7 +112,7 @@ def main():
     w = csv.DictWriter(buf, fieldnames=COLUMNS, lineterminator="\n")
     w.writeheader()
     for r in rows:
-        w.writerow({c: "" if r[c] is None else r[c] for c in COLUMNS})
+        w.writerow({c: csv_cell(r[c]) for c in COLUMNS})
     write_atomic(os.path.join(outroot, "index.csv"), buf.getvalue())
     print(f"batch: {len(rows)} inputs, {len(rows) - len(failed)} done, {len(failed)} failed; "
           f"index: {os.path.join(outroot, 'index.csv')}, index.json", file=sys.stderr)

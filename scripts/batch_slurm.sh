@@ -63,7 +63,7 @@ case "$mode" in
     exec "$batch" --index "$1"
     ;;
   *)
-    sed -n '7,24p' "$0"
+    awk 'NR >= 7 && !/^#/ { exit } NR >= 7 { print }' "$0"
     [ "$mode" = "-h" ] || [ "$mode" = "--help" ] || exit 2
     ;;
 esac

@@ -163,13 +163,6 @@ std::map<std::string, std::set<std::string>> config_keys(Table&& table) {
   return known;
 }
 
-/// Reads a YAML config file over the table's fields (fields not in the file keep their values).
-/// Throws InputError naming the file, key and line.
-template <class Table>
-void read_config_file(const std::string& path, Table&& table) {
-  read_config_tree(load_config_tree(path, config_keys(table)), path, table);
-}
-
 /// Reads an already checked tree (load_config_tree, check_config_tree) over the table's fields;
 /// errors name `name` as their file.
 template <class Table>
@@ -183,6 +176,13 @@ void read_config_tree(const YAML::Node& root, const std::string& name, Table&& t
     if (!n) return;
     ConfigValueOf<decltype(v)>::read(rd, n, *s ? std::string(s) + "." + k : std::string(k), v);
   });
+}
+
+/// Reads a YAML config file over the table's fields (fields not in the file keep their values).
+/// Throws InputError naming the file, key and line.
+template <class Table>
+void read_config_file(const std::string& path, Table&& table) {
+  read_config_tree(load_config_tree(path, config_keys(table)), path, table);
 }
 
 /// The table as YAML (what --print-config prints), readable by read_config_file.

@@ -59,7 +59,9 @@ py::list inputs_list(const std::vector<cloud_io::InputReport>& inputs) {
     d["points_dropped"] = in.points_dropped;
     d["scans"] = in.scans;
     d["scanner_known"] = in.scanner_known;
-    d["warnings"] = in.warnings;
+    py::list warnings;
+    for (const auto& w : in.warnings) warnings.append(w);
+    d["warnings"] = warnings;
     out.append(d);
   }
   return out;
