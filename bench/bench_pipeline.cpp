@@ -11,6 +11,7 @@
 #include <memory>
 #include <random>
 
+#include "../tests/ghost_reference.hpp"
 #include "indoormap/cloud/ghosts.hpp"
 #include "indoormap/cloud/level.hpp"
 #include "indoormap/cloud/voxel.hpp"
@@ -125,6 +126,61 @@ void BM_GhostsJacobs(benchmark::State& st) {
   }
   st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * rays));
 }
+// The reference: the first ghost filter, walking every ray voxel by voxel
+// (tests/ghost_reference.hpp), same grid, same rays (/0 the default budget, /1 every point).
+void BM_GhostsJacobsReference(benchmark::State& st) {
+  const auto& pts = inputs().jacobs;
+  if (skip_if_empty(st, pts) || inputs().jacobs_scanners.size() != 1) return;
+  cloud::VoxelParams vp;
+  const auto g = cloud::voxelize(pts, cloud::robust_bounds(pts, vp), vp);
+  cloud::GhostParams gp;
+  if (st.range(0) == 1) gp.max_rays = pts.size();
+  const std::vector<cloud::RaySource> src{{pts, inputs().jacobs_scanners[0]}};
+  std::size_t rays = 0;
+  for (auto _ : st) {
+    auto copy = g;
+    rays = cloud::reference_remove_ghost_voxels(copy, src, gp).rays;
+    benchmark::DoNotOptimize(copy.counts.data());
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * rays));
+}
+// The 80 x 60 m hall (bench::synthetic_hall, 10 M points, one scanner): voxelisation (the
+// reference of the same run), the ghost filter (/0 ours, /1 the ray-walking reference) and the
+// whole in-process pipeline (layout::make_map: levelling, voxels, ghosts, layout, objects' grids).
+const bench::Hall& hall() {
+  static const bench::Hall h = bench::synthetic_hall(10'000'000);
+  return h;
+}
+void BM_HallVoxelize(benchmark::State& st) {
+  cloud::VoxelParams vp;
+  for (auto _ : st) {
+    auto g = cloud::voxelize(hall().points, cloud::robust_bounds(hall().points, vp), vp);
+    benchmark::DoNotOptimize(g.counts.data());
+  }
+}
+void BM_HallGhosts(benchmark::State& st) {
+  cloud::VoxelParams vp;
+  const auto g = cloud::voxelize(hall().points, cloud::robust_bounds(hall().points, vp), vp);
+  const std::vector<cloud::RaySource> src{{hall().points, hall().scanner}};
+  const cloud::GhostParams gp;
+  std::int64_t removed = 0;
+  for (auto _ : st) {
+    auto copy = g;
+    removed = st.range(0) == 0 ? cloud::remove_ghost_voxels_by_origin(copy, src, gp).voxels_removed
+                               : cloud::reference_remove_ghost_voxels(copy, src, gp).voxels_removed;
+    benchmark::DoNotOptimize(copy.counts.data());
+  }
+  st.counters["voxels_removed"] = static_cast<double>(removed);
+}
+void BM_HallMakeMap(benchmark::State& st) {
+  for (auto _ : st) {
+    PointCloud c{hall().points, {hall().scanner}, {}};
+    auto r = layout::make_map(std::move(c), layout::MapParams{});
+    benchmark::DoNotOptimize(r.ghosts.voxels_removed);
+    for (const auto& t : r.timings) st.counters[t.stage + "_ms"] = t.ms;
+    st.counters["voxels_removed"] = static_cast<double>(r.ghosts.voxels_removed);
+  }
+}
 void BM_GhostsJacobsCopyOnly(benchmark::State& st) {
   const auto& pts = inputs().jacobs;
   if (skip_if_empty(st, pts)) return;
@@ -177,6 +233,10 @@ BENCHMARK(BM_LoadJacobs)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Level)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VoxelizeAndLayers)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GhostsJacobs)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GhostsJacobsReference)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_HallVoxelize)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_HallGhosts)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_HallMakeMap)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GhostsJacobsCopyOnly)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PclVoxelGrid)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Layout2D)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);

@@ -4,9 +4,12 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "config_reader.hpp"
 #include "indoormap/core/errors.hpp"
+#include "progress.hpp"
 #include "test_support.hpp"
 
 using namespace indoormap;
@@ -115,4 +118,42 @@ TEST(ConfigReader, StructureReaderRules) {
         << e.what();
   }
   EXPECT_THROW(app::load_yaml_file((test::scratch_dir() / "none.yaml").string()), InputError);
+}
+
+TEST(Progress, BarAndLineTexts) {
+  using indoormap::app::progress_text;
+  using indoormap::app::ProgressMode;
+  // 250 of 1000 in 2 s: 125/s, 6 s left.
+  const std::string bar = progress_text("x: step", "rays", ProgressMode::kBar, 250, 1000, 2.0);
+  EXPECT_EQ(bar, "x: step [======>                 ]  25%  125 rays/s  about 6 s left");
+  const std::string line = progress_text("x: step", "rays", ProgressMode::kLines, 250, 1000, 2.0);
+  EXPECT_EQ(line, "x: step: 25% (250 of 1000 rays, 125 rays/s, about 6 s left)");
+  // Unknown total: the count and the rate only; large counts get a suffix.
+  EXPECT_EQ(progress_text("p", "nodes", ProgressMode::kLines, 3'000'000, 0, 2.0),
+            "p: 3.0 M nodes (1.5 M nodes/s)");
+  EXPECT_EQ(progress_text("p", "nodes", ProgressMode::kBar, 3'000'000, 0, 2.0),
+            "p 3.0 M nodes  1.5 M nodes/s");
+  // Done: a full bar, no time left.
+  EXPECT_EQ(progress_text("s", "", ProgressMode::kBar, 10, 10, 1.0),
+            "s [========================] 100%");
+}
+
+TEST(Progress, TickerCallsEveryNAndAtTheEnd) {
+  std::vector<std::pair<std::int64_t, std::int64_t>> calls;
+  const indoormap::ProgressFn fn = [&](std::int64_t d, std::int64_t t) {
+    calls.emplace_back(d, t);
+  };
+  {
+    indoormap::ProgressTicker ticker(fn, 10, 4);
+    for (int i = 0; i < 10; ++i) ticker.tick();
+    ticker.finish();
+  }
+  ASSERT_EQ(calls.size(), 3u);
+  EXPECT_EQ(calls[0], std::make_pair(std::int64_t{4}, std::int64_t{10}));
+  EXPECT_EQ(calls[1], std::make_pair(std::int64_t{8}, std::int64_t{10}));
+  EXPECT_EQ(calls[2], std::make_pair(std::int64_t{10}, std::int64_t{10}));
+  const indoormap::ProgressFn none;
+  indoormap::ProgressTicker idle(none, 0, 1);
+  idle.tick(5);
+  idle.finish();  // an empty function is never called
 }

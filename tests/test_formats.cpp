@@ -82,6 +82,23 @@ TEST(RosMap, BothYamlSpellingsReadBackTheSame) {
   EXPECT_NEAR(app::read_map_yaml(dir / "a.yaml").origin.y(), meta.origin.y(), 1e-9);
 }
 
+TEST(RosMap, CommentsFollowTheKeysAndReadersIgnoreThem) {
+  const fs::path dir = test::scratch_dir();
+  formats::RosMapMeta meta = formats::map_meta("map.pgm", GridGeometry({1.0, 2.0}, 0.05, 4, 4));
+  meta.comments = {"input = R^T * map", "two\nlines"};
+  formats::write_map_yaml(dir / "c.yaml", meta);
+  EXPECT_EQ(test::read_text(dir / "c.yaml"),
+            "image: map.pgm\nmode: trinary\nresolution: 0.05\norigin: [1, 2, 0.0]\nnegate: 0\n"
+            "occupied_thresh: 0.65\nfree_thresh: 0.196\n# input = R^T * map\n# two lines\n");
+  const formats::RosMapMeta back = app::read_map_yaml(dir / "c.yaml");
+  EXPECT_EQ(back.origin, meta.origin);
+  EXPECT_TRUE(back.comments.empty());  // comments are not keys
+  Grid<Cell> g(4, 4, Cell::kFree);
+  formats::write_ros_map(dir, "m", g, GridGeometry({0, 0}, 0.1, 4, 4), {"yaw -40 deg"});
+  EXPECT_NE(test::read_text(dir / "m.yaml").find("\n# yaw -40 deg\n"), std::string::npos);
+  EXPECT_EQ(app::read_ros_map(dir / "m.yaml").cells.data, g.data);
+}
+
 TEST(PlainMap, GreyLevelsReadBackAsFreeAndOccupied) {
   const fs::path dir = test::scratch_dir();
   Grid<std::uint8_t> grey(4, 2, 255);

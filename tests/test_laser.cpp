@@ -9,6 +9,7 @@
 #include "indoormap/core/errors.hpp"
 #include "indoormap/laser/bresenham.hpp"
 #include "indoormap/laser/mappers.hpp"
+#include "indoormap/laser/pose_refine.hpp"
 #include "indoormap/laser/raycast.hpp"
 #include "test_support.hpp"
 
@@ -257,6 +258,96 @@ TEST(Consistency, ScansCastInAKnownRoomAgreeWithTheirMap) {
     EXPECT_GE(r.within_share, 0.97) << to_string(kind);
     EXPECT_LE(r.median_abs_error_m, 0.01) << to_string(kind);
   }
+}
+
+// ------------------------------------------------------------------------- pose refinement
+// An L-shaped room with a pillar (no symmetry to slide along), 0.05 m cells.
+Grid<Cell> refine_room() {
+  Grid<Cell> room(200, 120, Cell::kFree);
+  for (int c = 0; c < 200; ++c) room.at(c, 0) = room.at(c, 119) = Cell::kWall;
+  for (int r = 0; r < 120; ++r) room.at(0, r) = room.at(199, r) = Cell::kWall;
+  for (int r = 60; r < 120; ++r) room.at(140, r) = Cell::kWall;  // the L's inner wall
+  for (int c = 140; c < 200; ++c) room.at(c, 60) = Cell::kWall;
+  for (int r = 30; r < 40; ++r)
+    for (int c = 60; c < 70; ++c) room.at(c, r) = Cell::kWall;  // a pillar
+  return room;
+}
+
+// A 360-beam scan from the true pose, ranges to the middle of the wall cells.
+LaserScan scan_in(const Grid<Cell>& room, const GridGeometry& g, const Pose2d& truth) {
+  LaserScan s = beam_scan(truth.x_m, truth.y_m, truth.theta_rad, {}, -kPi, 2 * kPi / 360);
+  s.max_range_m = 30.0;
+  for (int i = 0; i < 360; ++i) {
+    const RayHit h = cast_ray_cell(g, truth.position_m(), truth.theta_rad + s.beam_angle_rad(i),
+                                   30.0, [&](CellIndex c) { return is_obstacle(room.at(c)); });
+    s.ranges_m.push_back(static_cast<float>(0.5 * (h.entry_m + h.exit_m)));
+  }
+  return s;
+}
+
+TEST(PoseRefine, FieldIsOneOnAThinWallAndFallsOffBesideIt) {
+  const GridGeometry g({0.0, 0.0}, 0.05, 40, 40);
+  Grid<Cell> cells(40, 40, Cell::kFree);
+  for (int r = 0; r < 40; ++r) cells.at(20, r) = Cell::kWall;
+  const MatchField f(cells, g, 0.05);
+  Eigen::Vector2d grad;
+  EXPECT_NEAR(f.sample(g.center_of({20, 20})), 1.0, 1e-3);
+  f.sample(g.center_of({20, 20}) - Eigen::Vector2d(0.02, 0.0), &grad);
+  EXPECT_GT(grad.x(), 0.0);  // uphill towards the wall from the left
+  const double beside = f.sample(g.center_of({21, 20}), &grad);
+  EXPECT_NEAR(beside, std::exp(-0.5), 0.05);  // one sigma away
+  EXPECT_LT(grad.x(), 0.0);                   // uphill towards the wall
+  EXPECT_EQ(f.sample({-1.0, 0.5}), 0.0);      // outside the grid
+}
+
+TEST(PoseRefine, RecoversAKnownPoseError) {
+  const GridGeometry g({0.0, 0.0}, 0.05, 200, 120);
+  const Grid<Cell> room = refine_room();
+  const MatchField field(room, g, 0.05);
+  const PoseRefineParams p;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> shift(-0.08, 0.08), turn(-1.5, 1.5);
+  const double xy[10][2] = {{1.5, 1.0}, {2.0, 4.5}, {4.5, 1.0}, {5.0, 3.5}, {6.0, 5.0},
+                            {8.0, 1.5}, {9.0, 2.2}, {2.5, 2.5}, {4.0, 2.8}, {1.0, 5.0}};
+  for (int k = 0; k < 10; ++k) {
+    const Pose2d truth{xy[k][0], xy[k][1], 0.6 * k - 2.5};
+    LaserScan s = scan_in(room, g, truth);
+    s.robot_pose_map = {truth.x_m + shift(rng), truth.y_m + shift(rng),
+                        truth.theta_rad + turn(rng) * kPi / 180.0};
+    const PoseCorrection c = refine_pose(s, field, 30.0, p);
+    ASSERT_TRUE(c.applied) << k;
+    EXPECT_NEAR(c.robot_pose_map.x_m, truth.x_m, 0.01) << k;
+    EXPECT_NEAR(c.robot_pose_map.y_m, truth.y_m, 0.01) << k;
+    EXPECT_NEAR(wrap_angle(c.robot_pose_map.theta_rad - truth.theta_rad), 0.0, 0.3 * kPi / 180)
+        << k;
+  }
+}
+
+TEST(PoseRefine, KeepsThePoseWhenTheScanCannotSupportACorrection) {
+  const GridGeometry g({0.0, 0.0}, 0.05, 200, 120);
+  const Grid<Cell> room = refine_room();
+  const MatchField field(room, g, 0.05);
+  PoseRefineParams p;
+  // A scan whose beams all fall outside the grid: nothing to match.
+  LaserScan far = beam_scan(50.0, 50.0, 0.0, std::vector<float>(360, 2.0f), -kPi, 2 * kPi / 360);
+  EXPECT_FALSE(refine_pose(far, field, 30.0, p).applied);
+  // Too few hits.
+  LaserScan s = scan_in(room, g, {3.0, 2.0, 0.0});
+  s.ranges_m.resize(20);
+  EXPECT_FALSE(refine_pose(s, field, 30.0, p).applied);
+  // A correction larger than the bound is refused: the scan keeps its pose.
+  LaserScan off = scan_in(room, g, {3.0, 2.0, 0.0});
+  off.robot_pose_map.x_m += 0.12;
+  p.max_shift_m = 0.05;
+  const PoseCorrection c = refine_pose(off, field, 30.0, p);
+  EXPECT_FALSE(c.applied);
+  EXPECT_EQ(c.robot_pose_map, off.robot_pose_map);
+  p = {};
+  p.passes = -1;
+  EXPECT_THROW(p.validate(), UsageError);
+  p = {};
+  p.field_sigma_m = 0.0;
+  EXPECT_THROW(p.validate(), UsageError);
 }
 
 }  // namespace

@@ -29,11 +29,11 @@ TEST(LoadErrors, MissingFileDirectoryAndUnknownExtension) {
   EXPECT_CONTAINS(msg, "d.pcd");
   EXPECT_CONTAINS(msg, "is a directory");
 
-  write_text(dir / "x.las", "whatever");
-  msg = message_of<InputError>([&] { load_cloud((dir / "x.las").string()); });
-  EXPECT_CONTAINS(msg, "x.las");
-  EXPECT_CONTAINS(msg, "unknown file type '.las'");
-  EXPECT_CONTAINS(msg, ".pcd, .ply, .xyz");
+  write_text(dir / "x.las2", "whatever");
+  msg = message_of<InputError>([&] { load_cloud((dir / "x.las2").string()); });
+  EXPECT_CONTAINS(msg, "x.las2");
+  EXPECT_CONTAINS(msg, "unknown file type '.las2'");
+  EXPECT_CONTAINS(msg, ".pcd, .ply, .xyz, .txt, .csv, .las");
 
   fs::create_directories(dir / "empty_dir");
   msg = message_of<InputError>([&] { load_cloud((dir / "empty_dir").string()); });

@@ -239,8 +239,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"all_nan", "nan.xyz", "nan nan nan\nnan 1 2\ninf 0 0\n",
                  "nan.xyz: empty cloud: all 3 points are non-finite (NaN / Inf)", ""},
         BadInput{"one_height", "flat.xyz", flat_cloud(), "one height", ""},
-        BadInput{"unknown_extension", "cloud.las", "1 2 3\n",
-                 "cloud.las: unknown file type '.las' (supported:", ""}),
+        BadInput{"unknown_extension", "cloud.las2", "1 2 3\n",
+                 "cloud.las2: unknown file type '.las2' (supported:", ""},
+        BadInput{"las_not_lasf", "cloud.las", "1 2 3\n",
+                 "cloud.las: LAS: not a LAS file (no 'LASF' signature)", ""},
+        BadInput{"laz", "cloud.LAZ", "LASF", "cloud.LAZ: compressed LAS (LAZ) is not read", ""},
+        BadInput{"e57", "cloud.e57", "ASTM-E57", "cloud.e57: E57 is not read: convert it", ""}),
     [](const auto& info) { return info.param.name; });
 
 TEST(PcdToMap, GridAboveBudgetIsRefusedBeforeAllocating) {

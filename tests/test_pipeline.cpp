@@ -2,8 +2,11 @@
 // sectors read straight from the 3DTK files. Skips when ../shared/data is absent.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <opencv2/imgproc.hpp>
 
+#include "ghost_reference.hpp"
+#include "indoormap/cloud/level.hpp"
 #include "indoormap/cloud_io/load.hpp"
 #include "indoormap/layout/pipeline.hpp"
 #include "indoormap/objects/objects.hpp"
@@ -52,6 +55,29 @@ TEST(JacobsPipeline, AllNineSectorsLoadWithTheScannerPose) {
   REQUIRE_JACOBS();
   EXPECT_EQ(J->loaded.cloud.points.size(), 516110u);
   ASSERT_FALSE(J->loaded.cloud.scanners.empty());
+}
+
+// The ghost filter (candidate voxels, rays indexed by direction) against the ray-walking reference
+// on the real scan, levelled as the pipeline does: the same voxels removed.
+TEST(JacobsPipeline, GhostFilterRemovesWhatTheRayWalkingReferenceRemoves) {
+  REQUIRE_JACOBS();
+  PointCloud c = J->loaded.cloud;
+  ASSERT_EQ(c.scanners.size(), 1u);
+  cloud::rotate(c, cloud::estimate_level(c.points, {}).map_from_input);
+  const cloud::VoxelParams vp;
+  const cloud::VoxelGrid g0 = cloud::voxelize(c.points, cloud::robust_bounds(c.points, vp), vp);
+  const std::vector<cloud::RaySource> src{{c.points, c.scanners[0]}};
+  cloud::VoxelGrid fast = g0, ref = g0;
+  const auto a = cloud::remove_ghost_voxels_by_origin(fast, src, {});
+  const auto b = cloud::reference_remove_ghost_voxels(ref, src, {});
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < fast.counts.size(); ++i) differ += fast.counts[i] != ref.counts[i];
+  std::printf("[ figures  ] Jacobs: %lld / %lld voxels removed, %zu differ\n",
+              static_cast<long long>(a.voxels_removed), static_cast<long long>(b.voxels_removed),
+              differ);
+  EXPECT_GT(b.voxels_removed, 100);
+  EXPECT_EQ(a.rays, b.rays);
+  EXPECT_LE(differ, static_cast<std::size_t>(b.voxels_removed) / 1000);
 }
 
 TEST(JacobsPipeline, LevellingPutsFloorAndCeilingIntoOneOrTwoLayers) {

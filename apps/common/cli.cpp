@@ -1,10 +1,9 @@
 #include "cli.hpp"
 
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <new>
 
 #include "indoormap/core/errors.hpp"
@@ -19,7 +18,8 @@ constexpr int kMaxScanNumber = 1'000'000;
 void add_pipeline_options(CLI::App& app, PipelineCli& cli) {
   app.add_option(
       "inputs", cli.inputs,
-      "Point clouds: .pcd, .ply, .xyz/.txt, or a 3DTK scan directory (several are merged)");
+      "Point clouds: .pcd, .ply, .xyz/.txt/.csv, .las (LAS 1.2-1.4), or a 3DTK scan directory "
+      "(several are merged)");
   app.add_option("-o,--out", cli.out_dir, "Output directory (created if missing)");
   app.add_option("-c,--config", cli.config_file, "YAML parameters (see config/default.yaml)");
   app.add_flag("--print-config", cli.print_config,
@@ -42,6 +42,9 @@ void add_pipeline_options(CLI::App& app, PipelineCli& cli) {
       ->check(CLI::NonNegativeNumber);
   app.add_option("--cell-m", cli.cell_m, "Voxel / map cell size in metres (voxel.cell_m)");
   app.add_flag("--no-level", cli.no_level, "Do not level the cloud (level.enabled: false)");
+  app.add_flag("--align-walls", cli.align_walls,
+               "Turn the map frame about the vertical so the walls run along x and y "
+               "(align_walls.enabled: true); summary.json and map.yaml say how to go back");
   app.add_option("--start", cli.start,
                  "Route start X,Y[,DEG] in the map frame (with --goal: route outputs)");
   app.add_option("--goal", cli.goal, "Route goal X,Y[,DEG] in the map frame (with --start)");
@@ -124,17 +127,21 @@ PipelineConfig resolve_config(const PipelineCli& cli) {
   }
   if (cli.cell_m != 0.0) c.map.voxel.cell_m = cli.cell_m;
   if (cli.no_level) c.map.level.enabled = false;
+  if (cli.align_walls) c.map.align_walls.enabled = true;
   if (cli.start.empty() != cli.goal.empty()) throw UsageError("--start and --goal go together");
   validate(c);
   return c;
 }
 
-std::function<void(const std::string&, double)> terminal_progress() {
-  if (!::isatty(STDERR_FILENO)) return {};
-  return [](const std::string& file, double fraction) {
-    std::fprintf(stderr, "\r%s: %3d%%%s", file.c_str(), static_cast<int>(fraction * 100.0),
-                 fraction >= 1.0 ? "\n" : "");
-    std::fflush(stderr);
+std::function<void(const std::string&, double)> load_progress(bool quiet) {
+  if (progress_mode(quiet) == ProgressMode::kOff) return {};
+  // One reporter per file (a 3DTK directory is many files), in per mille of the file's bytes.
+  auto current = std::make_shared<std::pair<std::string, ProgressReporter>>(
+      "", ProgressReporter("", "", true));
+  return [current](const std::string& file, double fraction) {
+    if (current->first != file)
+      *current = {file, ProgressReporter("loading " + file + " (per mille)", "", false)};
+    current->second.update(static_cast<std::int64_t>(fraction * 1000.0), 1000);
   };
 }
 

@@ -8,6 +8,7 @@
 #include "config.hpp"
 #include "indoormap/planning/planner.hpp"
 #include "main_guard.hpp"
+#include "progress.hpp"
 
 namespace indoormap::app {
 
@@ -25,9 +26,10 @@ struct PipelineCli {
   int storey = -1;                    ///< --storey K: only that storey (-1: every storey)
   double cell_m = 0.0;                ///< 0: from config
   bool no_level = false;
-  std::string start;   ///< "X,Y[,DEG]" map frame: plan a route (with goal)
-  std::string goal;    ///< "X,Y[,DEG]"
-  bool quiet = false;  ///< -q: no progress or run report on stderr (warnings still shown)
+  bool align_walls = false;  ///< --align-walls: align_walls.enabled
+  std::string start;         ///< "X,Y[,DEG]" map frame: plan a route (with goal)
+  std::string goal;          ///< "X,Y[,DEG]"
+  bool quiet = false;        ///< -q: no progress or run report on stderr (warnings still shown)
 };
 
 /// Parses "X,Y" or "X,Y,DEG" (metres, degrees counter-clockwise from +x). Throws UsageError
@@ -39,7 +41,8 @@ void add_pipeline_options(CLI::App& app, PipelineCli& cli);
 /// Defaults, then the config file, then the command-line overrides; validated.
 PipelineConfig resolve_config(const PipelineCli& cli);
 
-/// Prints "\r<file>: 42%" on stderr when stderr is a terminal (progress of long loads).
-std::function<void(const std::string&, double)> terminal_progress();
+/// The progress of long loads (text files, per file) for cloud_io::LoadOptions::progress, through
+/// ProgressReporter (a bar on a terminal, a line every few seconds otherwise); empty when quiet.
+std::function<void(const std::string&, double)> load_progress(bool quiet);
 
 }  // namespace indoormap::app

@@ -41,6 +41,13 @@ void visit(PipelineConfig& c, F&& f) {
   f("input", "max_points", c.load.max_points);
   f("input", "scanners", c.scanners);
   visit_level(c.map.level, f);
+  auto& al = c.map.align_walls;
+  f("align_walls", "enabled", al.enabled);
+  f("align_walls", "cell_m", al.cell_m);
+  f("align_walls", "min_wall_height_m", al.min_wall_height_m);
+  f("align_walls", "sample_points", al.sample_points);
+  f("align_walls", "min_wall_points", al.min_wall_points);
+  f("align_walls", "min_confidence", al.min_confidence);
   auto& vx = c.map.voxel;
   f("voxel", "cell_m", vx.cell_m);
   f("voxel", "max_cells", vx.max_cells);
@@ -219,7 +226,8 @@ void validate(const PipelineConfig& c) {
   };
   cloud_io::validate(c.load);  // throws UsageError naming input.<key>
   for (const auto& s : c.scanners) require(s.allFinite(), "input.scanners: must be finite");
-  cloud::validate(c.map.level);  // level.<key>, voxel.<key>, ghosts.<key>, layers.<key>
+  cloud::validate(c.map.level);        // level.<key>, voxel.<key>, ghosts.<key>, layers.<key>
+  cloud::validate(c.map.align_walls);  // align_walls.<key>
   cloud::validate(c.map.voxel);
   cloud::validate(c.map.ghosts);
   cloud::validate(c.map.layers);

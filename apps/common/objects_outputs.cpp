@@ -19,24 +19,29 @@ std::vector<std::string> write_object_outputs(const fs::path& out, const layout:
         objects::crop_indices(res, map.geometry, map.cloud_map.points, what.crop_margin_m);
     fs::create_directories(out / "objects");
     for (std::size_t k = 0; k < res.objects.size(); ++k) {
-      // Crops are in the input frame: the original points, picked by index.
+      // Crops are the original points, picked by index: in the input frame, or turned into the
+      // (wall-aligned) map frame.
       std::vector<Eigen::Vector3f> pts;
       pts.reserve(indices[k].size());
       for (auto i : indices[k]) pts.push_back((*what.input_points)[i]);
+      if (what.crop_map_from_input) {
+        const Eigen::Matrix3f r = what.crop_map_from_input->cast<float>();
+        for (auto& p : pts) p = r * p;
+      }
       const std::string name = "objects/object_" + std::to_string(res.objects[k].id) + ".pcd";
       cloud_io::write_pcd_binary(out / name, pts);
       crops.push_back({name, pts.size()});
       written.push_back(name);
     }
   }
-  if (what.room_ids && what.room_ids->size() == res.objects.size()) {
-    nlohmann::json j = formats::objects_json(res, map.geometry, crops);
+  nlohmann::json j = formats::objects_json(res, map.geometry, crops);
+  if (what.room_ids && what.room_ids->size() == res.objects.size())
     for (std::size_t k = 0; k < res.objects.size(); ++k)
       j["objects"][k]["room_id"] = (*what.room_ids)[k];
-    formats::write_json(out / "objects.json", j);
-  } else {
-    formats::write_objects_json(out / "objects.json", res, map.geometry, crops);
-  }
+  if (map.level.align.applied)
+    j["frame"] = "map (levelled and wall-aligned; see summary.json levelling.map_from_input)";
+  if (what.input_points) j["crop_frame"] = what.crop_map_from_input ? "map" : "input";
+  formats::write_json(out / "objects.json", j);
   written.push_back("objects.json");
   if (what.csv) {
     formats::write_objects_csv(out / "objects.csv", res);

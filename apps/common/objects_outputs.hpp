@@ -18,6 +18,10 @@ struct ObjectOutputs {
   /// Points of the input cloud, input frame, in the order make_map received them; when set, each
   /// object's crop is written to objects/object_<id>.pcd.
   const std::vector<Eigen::Vector3f>* input_points = nullptr;
+  /// When set (the walls were aligned: every output in the map frame), the crops are turned by
+  /// it (levelling.map_from_input) into the map frame; otherwise they stay in the input frame.
+  /// objects.json's "crop_frame" says which.
+  const Eigen::Matrix3d* crop_map_from_input = nullptr;
   double crop_margin_m = 0.05;
   /// When set (one per object, in the order of objects.objects): each object's "room_id" in
   /// objects.json (0: in no room; docs/pcd-to-map.md, "Rooms").

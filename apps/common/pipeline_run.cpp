@@ -14,6 +14,7 @@
 #include "indoormap/formats/pgm.hpp"
 #include "indoormap/formats/ros_map.hpp"
 #include "indoormap/version.hpp"
+#include "progress.hpp"
 #include "scanner_positions.hpp"
 
 namespace indoormap::app {
@@ -43,6 +44,30 @@ std::string fmt_m(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.2f", v);
   return b;
+}
+
+json matrix_json(const Eigen::Matrix3d& m) {
+  json rows = json::array();
+  for (int r = 0; r < 3; ++r) rows.push_back({m(r, 0), m(r, 1), m(r, 2)});
+  return rows;
+}
+
+// map.yaml's note on the frame when the walls were aligned: how to go back to the input frame.
+std::vector<std::string> frame_comments(const cloud::LevelResult& lv) {
+  if (!lv.align.applied) return {};
+  const Eigen::Matrix3d& r = lv.map_from_input;
+  char yaw[160], row[3][96];
+  std::snprintf(yaw, sizeof yaw,
+                "frame: levelled, then turned %.4f deg about +z (--align-walls) so the walls run "
+                "along x and y",
+                lv.align.yaw_deg);
+  for (int i = 0; i < 3; ++i)
+    std::snprintf(row[i], sizeof row[i], "%s[%.9f, %.9f, %.9f]%s", i == 0 ? "[" : " ", r(i, 0),
+                  r(i, 1), r(i, 2), i == 2 ? "]" : ",");
+  return {yaw,
+          "map = R * input, input = R^T * map (metres, about the input frame's origin); R = "
+          "summary.json levelling.map_from_input:",
+          std::string("R = ") + row[0], std::string("    ") + row[1], std::string("    ") + row[2]};
 }
 
 double ms_since(std::chrono::steady_clock::time_point t) {
@@ -100,16 +125,18 @@ void finish_summary(json& summary, const fs::path& out, std::vector<std::string>
 
 PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_input_points) {
   const auto t0 = std::chrono::steady_clock::now();
-  if (!cli.quiet) cfg.load.progress = terminal_progress();
+  cfg.load.progress = load_progress(cli.quiet);
   cloud_io::LoadResult loaded = cloud_io::load_clouds(cli.inputs, cfg.load);
+  cfg.load.progress = nullptr;  // ends the last file's bar line
   return map_loaded(std::move(loaded), cli, cfg, keep_input_points, ms_since(t0));
 }
 
-PipelineRun map_loaded(cloud_io::LoadResult loaded, const PipelineCli& cli,
-                       const PipelineConfig& cfg, bool keep_input_points, double load_ms) {
+PipelineRun map_loaded(cloud_io::LoadResult loaded, const PipelineCli& cli, PipelineConfig& cfg,
+                       bool keep_input_points, double load_ms) {
   PipelineRun run;
   run.load_ms = load_ms;
   run.inputs = loaded.inputs;
+  run.source_offset = loaded.source_offset;
   std::vector<std::string> input_warnings;
   for (const auto& in : loaded.inputs)
     input_warnings.insert(input_warnings.end(), in.warnings.begin(), in.warnings.end());
@@ -129,7 +156,11 @@ PipelineRun map_loaded(cloud_io::LoadResult loaded, const PipelineCli& cli,
   for (const auto& in : cli.inputs) names += (names.empty() ? "" : ", ") + in;
   const std::string unit = unit_hint(extent, cfg.load.unit_m);  // empty unless over 1 km wide
   try {
+    const ProgressReporter ghost_bar("ghost filter", "voxels", cli.quiet);
+    cfg.map.ghosts.progress = ghost_bar.fn();
     auto maps = layout::make_storey_maps(std::move(loaded.cloud), cfg.map, cfg.storeys, cli.storey);
+    cfg.map.ghosts.progress = nullptr;
+    ghost_bar.finish();
     run.storeys = maps.storeys;
     run.mapped = maps.mapped;
     if (maps.maps.empty()) throw InputError(names, "no storey holds points");
@@ -178,13 +209,17 @@ PipelineRun map_loaded(cloud_io::LoadResult loaded, const PipelineCli& cli,
   return run;
 }
 
-std::vector<std::string> write_map_outputs(const fs::path& out, const PipelineRun& run) {
+std::vector<std::string> write_map_outputs(const fs::path& out, const PipelineRun& run,
+                                           const PipelineConfig& cfg) {
   const auto& m = run.map;
   std::vector<Eigen::Vector2d> markers;
   for (const auto& s : m.cloud_map.scanners) markers.emplace_back(s.x(), s.y());
   if (m.layout.seeds_estimated)
     for (const auto& s : m.layout.seeds) markers.push_back(m.geometry.center_of(s));
-  formats::write_ros_map(out, "map", m.nav.map, m.geometry);  // the robot's map, not M_r
+  std::vector<std::string> comments = source_frame_comments(run, cfg);
+  for (auto& c : frame_comments(m.level)) comments.push_back(std::move(c));
+  formats::write_ros_map(out, "map", m.nav.map, m.geometry,  // the robot's map, not M_r
+                         comments);
   formats::write_layout_pgm(out / "layout.pgm", m.layout.layout);
   draw::RenderOptions ro;
   ro.title = "room layout M_r  (" + std::to_string(m.geometry.width()) + " x " +
@@ -209,22 +244,22 @@ json summary_json(const std::string& program, const PipelineRun& run, const Pipe
   for (const auto& in : run.inputs) {
     read += in.points_read;
     dropped += in.points_dropped;
-    inputs.push_back({{"path", in.path},
-                      {"format", in.format},
-                      {"points_read", in.points_read},
-                      {"points_dropped", in.points_dropped},
-                      {"scans", in.scans},
-                      {"scanner_known", in.scanner_known}});
+    inputs.push_back(
+        {{"path", in.path},
+         {"format", in.format},
+         {"points_read", in.points_read},
+         {"points_dropped", in.points_dropped},
+         {"scans", in.scans},
+         {"scanner_known", in.scanner_known},
+         {"source_offset", in.source_offset ? vec(*in.source_offset) : json(nullptr)}});
   }
   json layers = json::array();
   for (std::size_t z = 0; z < m.layers.occupied_per_layer.size(); ++z)
     layers.push_back({{"layer", z},
                       {"z_m", m.voxels.layer_center_m(static_cast<std::int64_t>(z))},
                       {"occupied_cells", m.layers.occupied_per_layer[z]}});
-  json rot = json::array();
-  for (int r = 0; r < 3; ++r)
-    rot.push_back(
-        {m.level.map_from_input(r, 0), m.level.map_from_input(r, 1), m.level.map_from_input(r, 2)});
+  const json rot = matrix_json(m.level.map_from_input);
+  const auto& al = m.level.align;
   json scanners = json::array();
   for (const auto& s : m.cloud_map.scanners) scanners.push_back(vec(s));
   json seeds = json::array();
@@ -262,6 +297,17 @@ json summary_json(const std::string& program, const PipelineRun& run, const Pipe
         {"floor_plane_input", plane_json(m.level.floor)},
         {"ceiling_plane_input", plane_json(m.level.ceiling)},
         {"note", m.level.note}}},
+      {"align_walls",
+       {{"enabled", cfg.map.align_walls.enabled},
+        {"applied", al.applied},
+        {"yaw_deg", al.yaw_deg},
+        {"wall_direction_levelled_deg", al.direction_deg},
+        {"confidence", al.confidence},
+        {"wall_points", al.wall_points},
+        {"note", al.note},
+        {"map_from_input", rot},
+        {"input_from_map", matrix_json(m.level.map_from_input.transpose())}}},
+      {"source_frame", source_frame_json(run, cfg)},
       {"grid",
        {{"resolution_m", m.voxels.cell_m},
         {"origin_m", vec(m.voxels.origin_m)},
@@ -320,6 +366,55 @@ json storeys_json(const PipelineRun& run) {
                    {"dir", run.storeys.size() > 1 ? "storey_" + std::to_string(k) : "."}});
   }
   return out;
+}
+
+namespace {
+
+constexpr const char* kToSource =
+    "source = source_frame.offset + S(transpose(map_from_input) * p_map) / unit_m, S undoing "
+    "the up-axis swap (up_axis z: S = identity; up_axis y: S(x, y, z) = (x, z, -y))";
+
+std::string fmt_offset(const Eigen::Vector3d& o) {
+  char b[128];
+  std::snprintf(b, sizeof b, "[%.3f, %.3f, %.3f]", o.x(), o.y(), o.z());
+  return b;
+}
+
+}  // namespace
+
+json source_frame_json(const PipelineRun& run, const PipelineConfig& cfg) {
+  if (!run.source_offset) return nullptr;
+  json rot = json::array();
+  const auto& r = run.map.level.map_from_input;
+  for (int i = 0; i < 3; ++i) rot.push_back({r(i, 0), r(i, 1), r(i, 2)});
+  return {{"offset", vec(*run.source_offset)},
+          {"unit_m", cfg.load.unit_m},
+          {"up_axis", cfg.load.up_axis == cloud_io::UpAxis::kY ? "y" : "z"},
+          {"map_from_input", rot},
+          {"to_source", kToSource},
+          {"note",
+           "LAS coordinates were moved to a local frame on reading (source minus offset, in "
+           "double precision, before the conversion to float); the map frame is that local "
+           "frame, scaled by unit_m, up-axis mapped and levelled (levelling.map_from_input)"}};
+}
+
+std::vector<std::string> source_frame_comments(const PipelineRun& run, const PipelineConfig& cfg) {
+  if (!run.source_offset) return {};
+  const auto& r = run.map.level.map_from_input;
+  char rot[256];
+  std::snprintf(rot, sizeof rot, "[[%.9f, %.9f, %.9f], [%.9f, %.9f, %.9f], [%.9f, %.9f, %.9f]]",
+                r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1), r(1, 2), r(2, 0), r(2, 1), r(2, 2));
+  char unit[64];
+  std::snprintf(unit, sizeof unit, "%g", cfg.load.unit_m);
+  return {
+      "map frame = map_from_input * ((source frame - source_offset) * unit_m), up-axis "
+      "mapped (the LAS input was moved to a local frame on reading)",
+      "source_offset: " + fmt_offset(*run.source_offset) +
+          "  (source units; summary.json source_frame.offset)",
+      std::string("unit_m: ") + unit +
+          "  up_axis: " + (cfg.load.up_axis == cloud_io::UpAxis::kY ? "y" : "z"),
+      std::string("map_from_input: ") + rot + "  (summary.json levelling.map_from_input)",
+      std::string("back: ") + kToSource};
 }
 
 void report(const std::string& program, const PipelineRun& run, bool quiet) {

@@ -28,6 +28,8 @@ struct PipelineRun {
   std::size_t kept = 0;
   std::string scanner_source;  ///< "file", "config", "trajectory" or "estimated"
   double load_ms = 0.0;
+  /// LAS inputs: the local-frame offset subtracted on reading (cloud_io::LoadResult).
+  std::optional<Eigen::Vector3d> source_offset;
 };
 
 /// What every pipeline app does before its own work.
@@ -63,14 +65,15 @@ void finish_summary(nlohmann::json& summary, const std::filesystem::path& out,
 PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& config, bool keep_input_points);
 
 /// run_pipeline's second half: the map of clouds already loaded (in load_ms), e.g. the Python
-/// bindings' numpy points; cli.inputs name the data in errors.
-PipelineRun map_loaded(cloud_io::LoadResult loaded, const PipelineCli& cli,
-                       const PipelineConfig& config, bool keep_input_points, double load_ms);
+/// bindings' numpy points; cli.inputs name the data in errors. config's progress hooks are set
+/// for the run (cli.quiet) and cleared after it.
+PipelineRun map_loaded(cloud_io::LoadResult loaded, const PipelineCli& cli, PipelineConfig& config,
+                       bool keep_input_points, double load_ms);
 
-/// map.pgm + map.yaml (the navigation map) and its picture map.png, layout.pgm, layout.png.
-/// Returns the file names.
-std::vector<std::string> write_map_outputs(const std::filesystem::path& out,
-                                           const PipelineRun& run);
+/// map.pgm + map.yaml (the navigation map; with LAS inputs, comments on the way back to the source
+/// frame) and its picture map.png, layout.pgm, layout.png. Returns the file names.
+std::vector<std::string> write_map_outputs(const std::filesystem::path& out, const PipelineRun& run,
+                                           const PipelineConfig& config);
 
 /// summary.json contents common to the pipeline apps; apps add their own keys.
 nlohmann::json summary_json(const std::string& program, const PipelineRun& run,
@@ -79,6 +82,14 @@ nlohmann::json summary_json(const std::string& program, const PipelineRun& run,
 /// The storeys found (index, floor and ceiling heights in the map frame, the points' z range,
 /// whether mapped, and the directory of its outputs).
 nlohmann::json storeys_json(const PipelineRun& run);
+
+/// How to go from the map frame back to the source frame of LAS inputs (the local-frame offset,
+/// unit and up axis, the levelling rotation), for summary.json; null when no LAS input was moved.
+nlohmann::json source_frame_json(const PipelineRun& run, const PipelineConfig& config);
+
+/// The same as map.yaml comment lines (empty when no LAS input was moved).
+std::vector<std::string> source_frame_comments(const PipelineRun& run,
+                                               const PipelineConfig& config);
 
 /// Prints the warnings and a one-line report on stderr.
 void report(const std::string& program, const PipelineRun& run, bool quiet = false);

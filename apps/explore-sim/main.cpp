@@ -21,6 +21,7 @@
 #include "indoormap/version.hpp"
 #include "map_yaml.hpp"
 #include "output_set.hpp"
+#include "progress.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
@@ -112,14 +113,11 @@ laser::Pose2d choose_start(const Args& a, const formats::RosMap& map,
           s.heading_deg.value_or(0.0) * std::numbers::pi / 180.0};
 }
 
-/// Progress on stderr: a line whenever the explored share passes another 10 %.
+/// Progress on stderr: the explored share of the free space (a bar, or a line every few s).
 std::function<void(const exploration::CoverageSample&)> progress_printer() {
-  auto next = std::make_shared<double>(0.1);
-  return [next](const exploration::CoverageSample& c) {
-    if (c.explored_share < *next) return;
-    while (*next <= c.explored_share) *next += 0.1;
-    std::fprintf(stderr, "explore-sim: %5.1f %% explored after %.1f m, %.0f s simulated\n",
-                 100.0 * c.explored_share, c.distance_m, c.time_s);
+  const app::ProgressReporter bar("explore-sim: explored (per mille)", "", false);
+  return [bar](const exploration::CoverageSample& c) {
+    bar.update(static_cast<std::int64_t>(1000.0 * c.explored_share), 1000);
   };
 }
 
@@ -166,6 +164,7 @@ int run(int argc, char** argv) {
   t0 = std::chrono::steady_clock::now();
   const exploration::ExploreResult r =
       exploration::explore(map.cells, map.geometry, info.start, cfg.explore);
+  cfg.explore.progress = nullptr;  // ends the progress bar's line
   const double explore_ms = ms_since(t0);
   if (r.status == exploration::ExploreStatus::kStartBlocked)
     throw Error("the start is blocked: nothing is reachable", ExitCode::kNoResult);

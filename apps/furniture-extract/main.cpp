@@ -27,7 +27,9 @@ int run(int argc, char** argv) {
       "  furniture-extract clouds/office/cloud.pcd -o out/objects\n"
       "  furniture-extract ../shared/data/jacobs-thermocolorlab -o out/jacobs-objects\n"
       "  furniture-extract room.ply -c my.yaml -o out   # objects.min_area_m2, crop_margin_m, ...\n"
-      "Outputs: objects.json, objects.csv, objects.png, objects/object_<id>.pcd (input frame),\n"
+      "  furniture-extract clouds/office/cloud.pcd --align-walls -o out/aligned   # crops too\n"
+      "Outputs: objects.json, objects.csv, objects.png, objects/object_<id>.pcd (input frame;\n"
+      "map frame with --align-walls), "
       "layout.pgm, map.yaml, summary.json.\n"
       "Exit codes: 0 done (also with no object: an empty list), 2 bad usage or bad input, 1 other "
       "failure.");
@@ -52,10 +54,11 @@ int run(int argc, char** argv) {
   const auto t_write = std::chrono::steady_clock::now();
   app::OutputSet set(out, "furniture-extract");  // all or nothing: docs/furniture-extract.md
   const fs::path& dir = set.dir();
-  std::vector<std::string> outputs = app::write_map_outputs(dir, run);
+  std::vector<std::string> outputs = app::write_map_outputs(dir, run, cfg);
   app::ObjectOutputs what;
   what.input_points = &run.input_points;
   what.crop_margin_m = cfg.objects.crop_margin_m;
+  if (m.level.align.applied) what.crop_map_from_input = &m.level.map_from_input;
   for (auto& f : app::write_object_outputs(dir, m, objs, what)) outputs.push_back(f);
 
   json summary = app::summary_json("furniture-extract", run, cfg);

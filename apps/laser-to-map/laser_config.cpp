@@ -32,6 +32,7 @@ void validate(const LaserMapConfig& c) {
   c.grid.validate();
   c.himm.validate();
   c.log_odds.validate();
+  c.pose_refine.validate();
   c.log.validate();
   laser::ConsistencyParams check = c.consistency;
   check.max_range_m = c.grid.max_range_m;

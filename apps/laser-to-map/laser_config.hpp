@@ -8,6 +8,7 @@
 
 #include "indoormap/formats/carmen.hpp"
 #include "indoormap/laser/mappers.hpp"
+#include "indoormap/laser/pose_refine.hpp"
 #include "indoormap/laser/raycast.hpp"
 
 namespace indoormap::app {
@@ -17,9 +18,10 @@ struct LaserMapConfig {
   laser::OccupancyGridParams grid;
   laser::HimmParams himm;
   laser::LogOddsParams log_odds;
+  laser::PoseRefineParams pose_refine;
   laser::ConsistencyParams consistency;
   formats::CarmenReadOptions log;
-  /// A progress line on stderr every this many scans (0: none; -q silences it too).
+  /// Progress on stderr every this many scans (0: none; -q silences it too; docs/progress.md).
   int progress_every_scans = 1000;
 };
 
@@ -48,6 +50,12 @@ void visit_laser_map(C& c, F&& f) {
   f("log_odds", "p_max", c.log_odds.p_max);
   f("log_odds", "occupied_above_p", c.log_odds.occupied_above_p);
   f("log_odds", "free_below_p", c.log_odds.free_below_p);
+  f("pose_refine", "passes", c.pose_refine.passes);
+  f("pose_refine", "field_sigma_m", c.pose_refine.field_sigma_m);
+  f("pose_refine", "iterations", c.pose_refine.iterations);
+  f("pose_refine", "max_shift_m", c.pose_refine.max_shift_m);
+  f("pose_refine", "max_turn_deg", c.pose_refine.max_turn_deg);
+  f("pose_refine", "min_hits", c.pose_refine.min_hits);
   f("consistency", "within_cells", c.consistency.within_cells);
   f("consistency", "histogram_bin_m", c.consistency.histogram_bin_m);
   f("consistency", "histogram_max_m", c.consistency.histogram_max_m);

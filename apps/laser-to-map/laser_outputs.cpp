@@ -34,6 +34,17 @@ std::string method_name(laser::MapperKind k) {
 
 }  // namespace
 
+json refine_json(const std::vector<PoseRefineStats>& passes) {
+  json out = json::array();
+  for (const auto& p : passes)
+    out.push_back({{"scans", p.scans},
+                   {"scans_moved", p.scans_moved},
+                   {"median_shift_m", p.median_shift_m},
+                   {"max_shift_m", p.max_shift_m},
+                   {"max_turn_deg", p.max_turn_deg}});
+  return out;
+}
+
 json laser_map_json(const LaserMapRun& run) {
   const auto& r = run.check;
   const auto& g = run.map.geometry;
@@ -46,6 +57,7 @@ json laser_map_json(const LaserMapRun& run) {
       {"scans_skipped", run.scans_skipped},
       {"lines", run.stats.lines},
       {"other_messages_skipped", run.stats.skipped},
+      {"pose_refine", refine_json(run.refine)},
       {"consistency",
        {{"beams_checked", r.beams_checked},
         {"beams_within", r.beams_within},

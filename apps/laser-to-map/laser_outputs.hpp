@@ -15,6 +15,13 @@
 
 namespace indoormap::app {
 
+/// One pose refinement pass (laser/pose_refine.hpp): how far it moved the scans.
+struct PoseRefineStats {
+  std::size_t scans = 0;        ///< scans aligned
+  std::size_t scans_moved = 0;  ///< of them, with a correction applied
+  double median_shift_m = 0.0, max_shift_m = 0.0, max_turn_deg = 0.0;  ///< over the moved ones
+};
+
 struct LaserMapRun {
   std::string log_path;
   LaserMapConfig config;
@@ -24,6 +31,7 @@ struct LaserMapRun {
   std::size_t scans_mapped = 0;         ///< FLASER messages integrated
   std::size_t scans_skipped = 0;        ///< FLASER messages with an unusable pose or angles
   std::vector<Eigen::Vector2d> path_m;  ///< robot path (map frame), a point per cell moved
+  std::vector<PoseRefineStats> refine;  ///< one per pose refinement pass (none: the log's poses)
   double map_ms = 0.0, check_ms = 0.0;
 };
 

@@ -5,18 +5,17 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <functional>
 #include <iostream>
 #include <optional>
 
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/core/input_file.hpp"
-#include "indoormap/formats/carmen_laser.hpp"
 #include "indoormap/formats/json.hpp"
 #include "indoormap/version.hpp"
 #include "laser_config.hpp"
 #include "laser_outputs.hpp"
+#include "laser_run.hpp"
 #include "main_guard.hpp"
 #include "output_set.hpp"
 
@@ -75,63 +74,6 @@ Args parse_args(int argc, char** argv) {
   return a;
 }
 
-/// One pass over the log: on_scan(scan) for every usable FLASER message; a scan that
-/// laser::validate rejects (a non-finite pose) is counted in skipped. A progress line on stderr
-/// every `every` scans (0: none). Throws InputError on the first bad line.
-formats::CarmenStats log_pass(const std::string& path, const app::LaserMapConfig& cfg, int every,
-                              const char* what, std::size_t& skipped,
-                              const std::function<void(const laser::LaserScan&)>& on_scan) {
-  formats::CarmenReader reader(path, cfg.log);
-  formats::CarmenScan c;
-  laser::LaserScan s;
-  skipped = 0;
-  while (reader.next(c)) {
-    s = formats::to_laser_scan(c);
-    try {
-      laser::validate(s);
-    } catch (const UsageError&) {
-      ++skipped;
-      continue;
-    }
-    on_scan(s);
-    const std::size_t n = reader.stats().scans;
-    if (every > 0 && n % static_cast<std::size_t>(every) == 0)
-      std::cerr << "laser-to-map: " << what << ": " << n << " scans (line " << c.line << ")\n";
-  }
-  return reader.stats();
-}
-
-/// Maps the log (first pass), then casts every scan into the finished map (second pass).
-app::LaserMapRun map_log(const std::string& path, const app::LaserMapConfig& cfg, bool quiet) {
-  app::LaserMapRun run;
-  run.log_path = path;
-  run.config = cfg;
-  const int every = quiet ? 0 : cfg.progress_every_scans;
-  auto t0 = Clock::now();
-  auto mapper = laser::make_mapper(cfg.method, cfg.grid, cfg.himm, cfg.log_odds);
-  run.stats = log_pass(path, cfg, every, "mapping", run.scans_skipped, [&](const auto& s) {
-    mapper->integrate(s);
-    // The path for the picture: a point per cell moved (none while the robot stands still).
-    const Eigen::Vector2d p = s.robot_pose_map.position_m();
-    if (run.path_m.empty() || (p - run.path_m.back()).norm() >= cfg.grid.cell_m)
-      run.path_m.push_back(p);
-  });
-  run.scans_mapped = mapper->scan_count();
-  run.map_ms = ms_since(t0);
-  if (run.scans_mapped == 0) return run;
-  t0 = Clock::now();
-  run.map = mapper->snapshot();
-  mapper.reset();
-  laser::ConsistencyParams cp = cfg.consistency;
-  cp.max_range_m = cfg.grid.max_range_m;
-  laser::ConsistencyCheck check(run.map.cells, run.map.geometry, cp);
-  std::size_t skipped = 0;
-  log_pass(path, cfg, every, "checking", skipped, [&](const auto& s) { check.add(s); });
-  run.check = check.result();
-  run.check_ms = ms_since(t0);
-  return run;
-}
-
 app::LaserMapConfig effective_config(const Args& a) {
   app::LaserMapConfig cfg;
   if (!a.config_file.empty()) app::merge_laser_map_config_file(cfg, a.config_file);
@@ -158,7 +100,7 @@ int run(int argc, char** argv) {
   ensure_writable_dir(out);
 
   // Everything is computed (and every log line read) before the first file is written.
-  const app::LaserMapRun r = map_log(a.log_path, cfg, a.quiet);
+  const app::LaserMapRun r = app::map_log(a.log_path, cfg, a.quiet);
   if (r.scans_mapped == 0) {
     std::cerr << "laser-to-map: " << a.log_path << ": no usable FLASER scan (" << r.stats.scans
               << " read, " << r.scans_skipped << " with an unusable pose); nothing written\n";

@@ -18,6 +18,7 @@
 #include "indoormap/version.hpp"
 #include "main_guard.hpp"
 #include "output_set.hpp"
+#include "progress.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
@@ -62,7 +63,8 @@ std::vector<std::optional<double>> result_floors(const fs::path& dir, int n) {
 /// Per-storey evaluation: truth storey k against the result's storey_<m> whose floor is nearest
 /// (within 1 m); without result floors, storey_<k> against truth storey k.
 ordered_json storeys_json(const formats::TruthFile& truth, const fs::path& dir,
-                          const map_eval::PairParams& p, int& evaluated) {
+                          const map_eval::PairParams& p, int& evaluated,
+                          const app::ProgressReporter& bar) {
   int n_result = 0;
   while (fs::is_directory(dir / ("storey_" + std::to_string(n_result)))) ++n_result;
   const auto floors = result_floors(dir, n_result);
@@ -81,6 +83,8 @@ ordered_json storeys_json(const formats::TruthFile& truth, const fs::path& dir,
       j["result"] = nullptr;
       j["note"] = "no result storey with a floor within 1 m";
       list.push_back(j);
+      bar.update(static_cast<std::int64_t>(list.size()) + 1,
+                 static_cast<std::int64_t>(truth.storeys.size()) + 1);
       continue;
     }
     j["result"] = "storey_" + std::to_string(match);
@@ -93,6 +97,8 @@ ordered_json storeys_json(const formats::TruthFile& truth, const fs::path& dir,
     evaluated += r.evaluated;
     j.update(r.json);
     list.push_back(j);
+    bar.update(static_cast<std::int64_t>(list.size()) + 1,
+               static_cast<std::int64_t>(truth.storeys.size()) + 1);
   }
   return list;
 }
@@ -114,10 +120,11 @@ int run(int argc, char** argv) {
       "nothing to evaluate, 1 other.");
   std::string truth_file, result_dir, out_dir, config_file;
   sim::EvalParams p;
-  bool print_config = false;
+  bool print_config = false, quiet = false;
   double min_iou = -1;
   bool include_hanging = false;
   double min_area = -1, robot_width = 0.4;
+  app.add_flag("-q,--quiet", quiet, "No progress or messages on stderr (errors stay)");
   app.add_option("--truth", truth_file, "ground_truth.json written by scene-sim");
   app.add_option("--result", result_dir, "Directory with the results to evaluate");
   app.add_option("-o,--out", out_dir, "Where to write eval.json (default: the result directory)");
@@ -166,11 +173,14 @@ int run(int argc, char** argv) {
   report["parameters"]["min_object_area_m2"] = p.min_truth_area_m2;
   report["parameters"]["robot_width_m"] = robot_width;
   const map_eval::PairParams pp{p, robot_width};
+  // Progress over the parts evaluated: the whole result, then each storey of a storeyed truth.
+  const app::ProgressReporter bar("map-eval: evaluating", "parts", quiet);
   auto pair = map_eval::evaluate_pair(truth, dir, pp);
+  bar.update(1, static_cast<std::int64_t>(truth.storeys.size()) + 1);
   int evaluated = pair.evaluated;
   const std::vector<std::string> missing = pair.missing;
   report.update(pair.json);
-  if (!truth.storeys.empty()) report["storeys"] = storeys_json(truth, dir, pp, evaluated);
+  if (!truth.storeys.empty()) report["storeys"] = storeys_json(truth, dir, pp, evaluated, bar);
   report["missing"] = missing;
   {
     app::OutputSet set(out_dir, "map-eval");  // all or nothing: docs/map-eval.md, "Outputs"
@@ -184,7 +194,8 @@ int run(int argc, char** argv) {
         result_dir.c_str());
     return static_cast<int>(ExitCode::kNoResult);
   }
-  std::fprintf(stderr, "map-eval: wrote %s\n", (fs::path(out_dir) / "eval.json").c_str());
+  if (!quiet)
+    std::fprintf(stderr, "map-eval: wrote %s\n", (fs::path(out_dir) / "eval.json").c_str());
   return 0;
 }
 

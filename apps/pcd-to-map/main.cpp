@@ -39,6 +39,8 @@ int run(int argc, char** argv) {
       "  pcd-to-map clouds/office/cloud.pcd --start 1,1,0 --goal 4,3 -o out   # adds a route\n"
       "  pcd-to-map building.pcd --trajectory trajectory.txt -o out   # mobile scan, its path\n"
       "  pcd-to-map building.pcd --storey 1 -o out/first   # the second storey only\n"
+      "  pcd-to-map ../shared/data/jacobs-thermocolorlab --align-walls -o out/aligned   # walls "
+      "along x / y\n"
       "Exit codes: 0 done, 2 bad usage or bad input, 3 no route (with --start/--goal), 1 other "
       "failure.");
   app::PipelineCli cli;
@@ -71,7 +73,7 @@ int run(int argc, char** argv) {
     if (!sub.empty()) fs::create_directories(dir);
     run.map = std::move(w.map);
     const auto& m = run.map;
-    std::vector<std::string> outputs = app::write_map_outputs(dir, run);
+    std::vector<std::string> outputs = app::write_map_outputs(dir, run, cfg);
     app::ObjectOutputs what;
     what.csv = what.picture = false;
     what.room_ids = &w.rooms.object_rooms;
@@ -110,6 +112,7 @@ int run(int argc, char** argv) {
     json summary = {{"program", "pcd-to-map"},
                     {"version", kVersion},
                     {"storeys", app::storeys_json(run)},
+                    {"source_frame", app::source_frame_json(run, cfg)},
                     {"parameters", app::to_json(cfg)}};
     app::finish_summary(summary, set.dir(), top_outputs, t_write, setup->start);
   }

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 
 #include "cli.hpp"
@@ -14,6 +15,7 @@
 #include "map_yaml.hpp"
 #include "output_set.hpp"
 #include "plan_config.hpp"
+#include "progress.hpp"
 #include "route_files.hpp"
 
 namespace fs = std::filesystem;
@@ -119,14 +121,22 @@ int run(int argc, char** argv) {
         stderr, "plan-route: %s: %d x %d cells of %.3f m; searching (budget %lld nodes, %g s)\n",
         a.map_path.c_str(), map.geometry.width(), map.geometry.height(), map.geometry.cell_m(),
         static_cast<long long>(cfg.planner.max_nodes), cfg.planner.max_seconds);
-    cfg.planner.progress = [](const char* search, std::int64_t nodes, double s) {
-      std::fprintf(stderr, "plan-route: %s search: %lld nodes expanded, %.0f s\n", search,
-                   static_cast<long long>(nodes), s);
+    // One reporter per search (the planner calls about once a second; the total is unknown).
+    auto current = std::make_shared<std::pair<std::string, app::ProgressReporter>>(
+        "", app::ProgressReporter("", "", true));
+    cfg.planner.progress = [current](const char* search, std::int64_t nodes, double) {
+      if (current->first != search) {
+        current->second.finish();
+        *current = {search, app::ProgressReporter(std::string("plan-route: ") + search + " search",
+                                                  "nodes", false)};
+      }
+      current->second.update(nodes, 0);
     };
   }
   t0 = std::chrono::steady_clock::now();
   const planning::PlanResult result =
       planning::plan_routes(safe, map.geometry, start, goal, templates, cfg.planner);
+  cfg.planner.progress = nullptr;  // ends the progress bar's line
   const double plan_ms = ms_since(t0);
 
   t0 = std::chrono::steady_clock::now();

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -21,6 +22,7 @@
 #include "indoormap/version.hpp"
 #include "main_guard.hpp"
 #include "output_set.hpp"
+#include "progress.hpp"
 #include "scene_outputs.hpp"
 #include "scene_yaml.hpp"
 
@@ -271,16 +273,26 @@ int run(int argc, char** argv) {
   if (config.mobile) plan_paths(building, config, a.quiet);
   sim::SimOptions sim_options;
   sim_options.sector_deg = config.sector_deg;
+  std::int64_t all_rays = 0;
   for (const auto& st : building.storeys) {
     const sim::Scene& scene = st.scene;
+    const std::uint64_t rays =
+        config.mobile ? sim::mobile_ray_count(scene, config.mobile_params) : sim::ray_count(scene);
+    all_rays += static_cast<std::int64_t>(rays);
     if (!a.quiet)
       std::fprintf(
           stderr,
           "scene-sim: %s: %zu room(s), %zu furniture item(s), %zu scanner position(s), %llu rays\n",
           scene.name.c_str(), scene.rooms.size(), scene.furniture.size(), scene.scanners.size(),
-          static_cast<unsigned long long>(config.mobile
-                                              ? sim::mobile_ray_count(scene, config.mobile_params)
-                                              : sim::ray_count(scene)));
+          static_cast<unsigned long long>(rays));
+  }
+  const app::ProgressReporter bar("scene-sim: casting rays", "rays", a.quiet);
+  if (bar.active()) {  // one bar over all storeys: each storey's count starts at 0 again
+    auto base = std::make_shared<std::int64_t>(0);
+    sim_options.progress = [bar, base, all_rays](std::int64_t done, std::int64_t total) {
+      bar.update(*base + done, all_rays);
+      if (total > 0 && done >= total) *base += total;
+    };
   }
   const sim::BuildingSim bsim =
       sim::simulate_storeys(building, sim_options, config.mobile ? &config.mobile_params : nullptr);

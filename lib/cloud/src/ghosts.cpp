@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+#include <cstring>
 #include <string>
 
+#include "ghost_rays.hpp"
 #include "indoormap/core/errors.hpp"
 
 namespace indoormap::cloud {
@@ -20,6 +21,29 @@ void validate(const GhostParams& gh) {
   require(gh.end_skip_m >= 0, "ghosts.end_skip_m: must be >= 0");
   require(gh.max_rays >= 1 && gh.max_rays <= 1'000'000'000, "ghosts.max_rays: must be in [1, 1e9]");
 }
+
+namespace {
+
+/// Indices of the voxels holding 1 to max_points points. Most voxels are empty: four at a time
+/// are skipped with one 64-bit test (the grid can hold hundreds of millions).
+std::vector<std::int64_t> few_point_voxels(const std::vector<std::uint16_t>& counts,
+                                           int max_points) {
+  std::vector<std::int64_t> out;
+  const std::size_t n = counts.size(), n4 = n / 4 * 4;
+  auto take = [&](std::size_t i) {
+    if (counts[i] && counts[i] <= max_points) out.push_back(static_cast<std::int64_t>(i));
+  };
+  for (std::size_t i = 0; i < n4; i += 4) {
+    std::uint64_t word;
+    std::memcpy(&word, counts.data() + i, sizeof word);
+    if (word == 0) continue;
+    for (std::size_t k = i; k < i + 4; ++k) take(k);
+  }
+  for (std::size_t i = n4; i < n; ++i) take(i);
+  return out;
+}
+
+}  // namespace
 
 GhostResult remove_ghost_voxels(VoxelGrid& g, const std::vector<Eigen::Vector3f>& points,
                                 const Eigen::Vector3d& scanner, const GhostParams& params) {
@@ -39,84 +63,41 @@ GhostResult remove_ghost_voxels_by_origin(VoxelGrid& g, const std::vector<RaySou
   if (!params.enabled || !usable) return res;
   res.applied = true;
   if (g.counts.empty() || total == 0) return res;
-  const std::int64_t n[3] = {g.nx, g.ny, g.nz};
-  const std::int64_t nxy = g.layer_size();
-  std::vector<std::uint8_t> passes(g.counts.size(), 0);  // saturating
+  // Only a voxel with few points can be a ghost: those are the candidates, and for each only the
+  // rays whose direction falls in its footprint are tested (detail::RayFan), so the cost grows
+  // with the candidates and the ray density, not with the length of the rays.
+  const std::vector<std::int64_t> candidates = few_point_voxels(g.counts, params.max_points);
+  std::vector<int> passes(candidates.size(), 0);
   // One stride over all sources: max_rays bounds the whole filter, whatever the number of scans.
   const std::size_t stride = std::max<std::size_t>(
       1, (total + params.max_rays - 1) / std::max<std::size_t>(params.max_rays, 1));
-  const double skip = g.to_cells(params.end_skip_m);
-  const std::uint16_t* counts = g.counts.data();
+  const double scale = static_cast<double>(stride);
+  // Enough passes to decide (counted up to this, like the saturating counter before).
+  const int cap = static_cast<int>(std::min<double>(
+      255.0,
+      std::ceil(std::max<double>(params.min_passes, params.min_pass_ratio * params.max_points) /
+                scale)));
+  std::int64_t sources_used = 0;
+  for (const auto& src : sources) sources_used += src.scanner.allFinite();
+  ProgressTicker ticker(params.progress,
+                        sources_used * static_cast<std::int64_t>(candidates.size()), 16384);
+  const std::int64_t nxy = g.layer_size();
   for (const auto& src : sources) {
     if (!src.scanner.allFinite()) continue;
-    const auto& points = src.points;
-    const Eigen::Vector3d s = g.to_voxel_coords(src.scanner);  // voxel units
-    for (std::size_t i = 0; i < points.size(); i += stride) {
-      const Eigen::Vector3d e = g.to_voxel_coords(points[i].cast<double>());
-      if (!e.allFinite()) continue;
-      const double end_layer = std::floor(e.z());
-      if (e.x() < 0 || e.y() < 0 || e.z() < 0 || e.x() >= n[0] || e.y() >= n[1] || e.z() >= n[2])
-        continue;
-      const Eigen::Vector3d d = e - s;
-      const double len = d.norm();
-      if (!(len > skip)) continue;
-      ++res.rays;
-      // The ray s + t d, t in [t0, t1]: clipped to the grid box, its last `skip` left out.
-      double t0 = 0.0, t1 = 1.0 - skip / len;
-      for (int a = 0; a < 3; ++a) {
-        if (std::abs(d[a]) < 1e-12) {
-          if (s[a] < 0 || s[a] >= n[a]) t1 = -1.0;
-          continue;
-        }
-        double ta = (0.0 - s[a]) / d[a], tb = (static_cast<double>(n[a]) - s[a]) / d[a];
-        if (ta > tb) std::swap(ta, tb);
-        t0 = std::max(t0, ta);
-        t1 = std::min(t1, tb);
-      }
-      if (t0 >= t1) continue;
-      // Amanatides-Woo traversal from the entry point.
-      const Eigen::Vector3d p0 = s + (t0 + 1e-9) * d;
-      std::int64_t v[3], step[3];
-      double t_max[3], t_delta[3];
-      for (int a = 0; a < 3; ++a) {
-        v[a] = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor(p0[a])), 0, n[a] - 1);
-        if (d[a] > 0) {
-          step[a] = 1;
-          t_max[a] = (static_cast<double>(v[a] + 1) - s[a]) / d[a];
-          t_delta[a] = 1.0 / d[a];
-        } else if (d[a] < 0) {
-          step[a] = -1;
-          t_max[a] = (static_cast<double>(v[a]) - s[a]) / d[a];
-          t_delta[a] = -1.0 / d[a];
-        } else {
-          step[a] = 0;
-          t_max[a] = t_delta[a] = std::numeric_limits<double>::infinity();
-        }
-      }
-      // Hot loop: the voxel index moves by a fixed offset per axis step; most voxels are empty.
-      const std::int64_t offset[3] = {step[0], step[1] * g.nx, step[2] * nxy};
-      const std::int64_t lo_layer = static_cast<std::int64_t>(end_layer) - params.min_layer_offset,
-                         hi_layer = static_cast<std::int64_t>(end_layer) + params.min_layer_offset;
-      std::int64_t idx = g.index(v[0], v[1], v[2]);
-      double t = t0;
-      while (t < t1) {
-        if (counts[idx] && (v[2] <= lo_layer || v[2] >= hi_layer) && passes[idx] != 0xFF)
-          ++passes[idx];
-        const int a =
-            t_max[0] < t_max[1] ? (t_max[0] < t_max[2] ? 0 : 2) : (t_max[1] < t_max[2] ? 1 : 2);
-        t = t_max[a];
-        t_max[a] += t_delta[a];
-        v[a] += step[a];
-        idx += offset[a];
-        if (v[a] < 0 || v[a] >= n[a]) break;
-      }
+    const detail::RayFan fan(g, src.points, src.scanner, stride, g.to_cells(params.end_skip_m));
+    res.rays += fan.size();
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      ticker.tick();
+      if (passes[k] >= cap) continue;
+      const std::int64_t i = candidates[k], iz = i / nxy, iy = (i % nxy) / g.nx, ix = i % g.nx;
+      passes[k] += fan.passes(ix, iy, iz, params.min_layer_offset, cap - passes[k]);
     }
   }
-  const double scale = static_cast<double>(stride);
-  for (std::size_t i = 0; i < g.counts.size(); ++i) {
+  ticker.finish();
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    const auto i = static_cast<std::size_t>(candidates[k]);
     const std::uint16_t c = g.counts[i];
-    if (!c || c > params.max_points) continue;
-    const double p = passes[i] * scale;
+    const double p = passes[k] * scale;
     if (p >= params.min_passes && p >= params.min_pass_ratio * c) {
       ++res.voxels_removed;
       res.points_removed += c;

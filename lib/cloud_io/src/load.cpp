@@ -12,6 +12,7 @@
 
 #include "indoormap/core/errors.hpp"
 #include "indoormap/core/input_file.hpp"
+#include "las_internal.hpp"
 #include "load_internal.hpp"
 
 namespace indoormap::cloud_io {
@@ -72,7 +73,7 @@ std::string lower(std::string s) {
 }
 
 constexpr const char* kSupported =
-    "supported: .pcd, .ply, .xyz, .txt, .csv, .3d (3DTK scan), or a 3DTK scan directory";
+    "supported: .pcd, .ply, .xyz, .txt, .csv, .las, .3d (3DTK scan), or a 3DTK scan directory";
 
 // Maps input units and axes to the output frame (metres, right-handed, z up).
 Eigen::Vector3d to_output(const Eigen::Vector3d& p, const LoadOptions& options) {
@@ -90,7 +91,7 @@ void load_one(const std::string& path, const LoadOptions& options, LoadResult& r
   const bool is_dir = fs::is_directory(path, ec);
   const std::string ext = lower(fs::path(path).extension().string());
   const bool file_ext = ext == ".pcd" || ext == ".ply" || ext == ".xyz" || ext == ".txt" ||
-                        ext == ".csv" || ext == ".3d";
+                        ext == ".csv" || ext == ".3d" || ext == ".las";
 
   auto& points = result.cloud.points;
   const std::size_t first = points.size();
@@ -111,6 +112,17 @@ void load_one(const std::string& path, const LoadOptions& options, LoadResult& r
   } else if (ext == ".xyz" || ext == ".txt" || ext == ".csv") {
     report.format = "xyz";
     info = detail::read_xyz(path, budget, options, points);
+  } else if (ext == ".las") {
+    report.format = "las";
+    info = detail::read_las(path, budget, result.source_offset, points);
+  } else if (ext == ".laz" || ext == ".e57") {
+    detail::checked_file_size(path);
+    throw InputError(path, (ext == ".laz" ? std::string("compressed LAS (LAZ) is not read: ") +
+                                                detail::las_laz_hint()
+                                          : std::string("E57 is not read: convert it to LAS or "
+                                                        "PLY first, e.g. 'pdal translate in.e57 "
+                                                        "out.las' (PDAL with E57 support) or "
+                                                        "CloudCompare (save as LAS or PLY)")));
   } else if (ext == ".3d") {
     report.format = "3dtk";
     info = detail::read_3dtk(path, budget, options, points);
@@ -155,6 +167,8 @@ void load_one(const std::string& path, const LoadOptions& options, LoadResult& r
   report.scans = info.scans;
   report.warnings = info.warnings;
   report.scanner_known = !info.scanners.empty();
+  report.source_offset = info.source_offset;
+  if (info.source_offset && !result.source_offset) result.source_offset = info.source_offset;
   if (kept == first) {
     if (info.points == 0) throw InputError(path, "empty cloud: no points");
     throw InputError(path, "empty cloud: all " + std::to_string(info.points) +
@@ -180,6 +194,12 @@ LoadResult load_clouds(const std::vector<std::string>& paths, const LoadOptions&
   if (paths.empty()) throw UsageError("no input cloud given");
   LoadResult result;
   for (const auto& p : paths) load_one(p, options, result);
+  if (result.source_offset && !result.source_offset->isZero())
+    for (auto& in : result.inputs)
+      if (!in.source_offset)
+        in.warnings.push_back(in.path +
+                              ": not moved to the local frame of the LAS inputs (only "
+                              "LAS coordinates are moved): check that the inputs share a frame");
   return result;
 }
 

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -45,6 +46,8 @@ struct ReadInfo {
   /// kNoScanner. Empty: a file with at most one scanner (all its points are that scanner's).
   static constexpr std::size_t kNoScanner = static_cast<std::size_t>(-1);
   std::vector<std::pair<std::uint64_t, std::size_t>> runs;
+  /// LAS: the offset subtracted from every point (source units; InputReport::source_offset).
+  std::optional<Eigen::Vector3d> source_offset;
 };
 
 /// Makes room for `n` more points, growing geometrically so that merging many files stays
@@ -82,6 +85,12 @@ ReadInfo read_xyz(const std::string& file, const Budget& budget, const LoadOptio
 /// A scan directory or a single scanNNN.3d file.
 ReadInfo read_3dtk(const std::string& path, const Budget& budget, const LoadOptions& options,
                    std::vector<Eigen::Vector3f>& out);
+
+/// A LAS file (.las): points in the local frame (source minus offset, source units). The offset
+/// is shared_offset when given (an earlier LAS input chose it), else choose_las_offset's.
+ReadInfo read_las(const std::string& file, const Budget& budget,
+                  const std::optional<Eigen::Vector3d>& shared_offset,
+                  std::vector<Eigen::Vector3f>& out);
 
 /// Text point parser shared by XYZ and 3DTK: x y z first on each line, whitespace or comma
 /// separated, further columns ignored; empty lines and lines starting with '#' or '//'

@@ -56,11 +56,16 @@ void write_map_yaml(const fs::path& path, const RosMapMeta& meta, MapYamlStyle s
       << "occupied_thresh: " << shortest(meta.occupied_thresh) << "\n"
       << "free_thresh: " << shortest(meta.free_thresh) << "\n";
   }
+  for (std::string line : meta.comments) {  // one line each: a newline would end the comment
+    for (auto& ch : line)
+      if (ch == '\n' || ch == '\r') ch = ' ';
+    y << "# " << line << "\n";
+  }
   write_file_atomic(path, y.str());
 }
 
 void write_ros_map(const fs::path& dir, const std::string& stem, const Grid<Cell>& layout,
-                   const GridGeometry& geo) {
+                   const GridGeometry& geo, const std::vector<std::string>& comments) {
   Grid<std::uint8_t> img(layout.width, layout.height);
   for (std::size_t i = 0; i < img.size(); ++i) {
     switch (layout.data[i]) {
@@ -77,7 +82,9 @@ void write_ros_map(const fs::path& dir, const std::string& stem, const Grid<Cell
     }
   }
   write_pgm(dir / (stem + ".pgm"), img);
-  write_map_yaml(dir / (stem + ".yaml"), map_meta(stem + ".pgm", geo), MapYamlStyle::kRosMap);
+  RosMapMeta meta = map_meta(stem + ".pgm", geo);
+  meta.comments = comments;
+  write_map_yaml(dir / (stem + ".yaml"), meta, MapYamlStyle::kRosMap);
 }
 
 namespace {

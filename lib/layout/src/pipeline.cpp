@@ -62,6 +62,7 @@ void run_ghost_filter(PointCloud& cloud, const cloud::GhostParams& params, MapRe
 
 void validate(const MapParams& params) {
   cloud::validate(params.level);
+  cloud::validate(params.align_walls);
   cloud::validate(params.voxel);
   cloud::validate(params.ghosts);
   cloud::validate(params.layers);
@@ -73,10 +74,18 @@ cloud::LevelResult level_cloud(PointCloud& cloud, const MapParams& params,
                                std::vector<std::string>& warnings) {
   cloud::LevelResult level = cloud::estimate_level(cloud.points, params.level, cloud.scanners);
   warnings.insert(warnings.end(), level.warnings.begin(), level.warnings.end());
-  if (level.levelled)
-    cloud::rotate(cloud, level.map_from_input);
-  else if (params.level.enabled)
-    warnings.push_back("not levelled: " + level.note);
+  if (!level.levelled && params.level.enabled) warnings.push_back("not levelled: " + level.note);
+  if (params.align_walls.enabled) {
+    level.align =
+        cloud::estimate_wall_alignment(cloud.points, params.align_walls, level.map_from_input);
+    if (level.align.applied)
+      level.map_from_input = level.align.rotation * level.map_from_input;
+    else
+      warnings.push_back("walls not aligned: " + level.align.note);
+  } else {
+    level.align.note = "wall alignment disabled";
+  }
+  if (level.levelled || level.align.applied) cloud::rotate(cloud, level.map_from_input);
   return level;
 }
 

@@ -105,6 +105,7 @@ SimResult simulate_pattern(const Scene& scene, const SimOptions& options, std::u
   Rng rng(scene.seed);
   constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> prev_col, cur_col, cos_el, sin_el;
+  ProgressTicker ticker(options.progress, static_cast<std::int64_t>(rays), 100'000);
 
   for (std::size_t s = 0; s < scene.scanners.size(); ++s) {
     const RayPattern pat = pattern(s);
@@ -180,10 +181,12 @@ SimResult simulate_pattern(const Scene& scene, const SimOptions& options, std::u
         out.mixed_pixels += mixed;
       }
       std::swap(prev_col, cur_col);
+      ticker.tick(n_el);
     }
     if (!out.scans.empty()) out.scans.back().end = out.points.size();
   }
   out.returns = out.points.size();
+  ticker.finish();
   return out;
 }
 

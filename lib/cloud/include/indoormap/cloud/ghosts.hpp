@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "indoormap/cloud/voxel.hpp"
+#include "indoormap/core/progress.hpp"
 
 namespace indoormap::cloud {
 
@@ -25,7 +26,10 @@ struct GhostParams {
   /// layer before it lands, and would take the top for a ghost.
   int min_layer_offset = 4;
   double end_skip_m = 0.1;         ///< the last stretch of every ray (its own surface) counts not
-  std::size_t max_rays = 500'000;  ///< at most this many rays are traced (every k-th point)
+  std::size_t max_rays = 500'000;  ///< at most this many rays are used (every k-th point)
+  /// Candidate voxels tested of those to test (per scanner position), every 16384 (empty:
+  /// none). Not a config key.
+  ProgressFn progress;
 };
 
 /// Throws UsageError naming the key (ghosts.min_passes, ...) for a parameter out of its range.
@@ -35,7 +39,7 @@ struct GhostResult {
   bool applied = false;  ///< the filter ran (enabled, one scanner known)
   std::int64_t voxels_removed = 0;
   std::uint64_t points_removed = 0;  ///< points in the removed voxels
-  std::size_t rays = 0;              ///< rays traced
+  std::size_t rays = 0;              ///< rays used
 };
 
 /// Clears the ghost voxels of `grid` (their counts become 0). `points` and `scanner` are in the

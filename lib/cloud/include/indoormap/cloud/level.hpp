@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "indoormap/cloud/align.hpp"
 #include "indoormap/core/cloud.hpp"
 
 namespace indoormap::cloud {
@@ -67,8 +68,11 @@ LevelSupport level_support(const std::vector<Eigen::Vector3d>& sample, const Pla
                            double inlier_m, const std::vector<Eigen::Vector3d>& scanners);
 
 struct LevelResult {
-  bool levelled = false;  ///< false: rotation is identity (disabled or no plane found)
-  Eigen::Matrix3d map_from_input = Eigen::Matrix3d::Identity();  ///< rotation about the origin
+  bool levelled = false;  ///< false: no tilt corrected (disabled or no plane found)
+  /// Rotation about the origin: map = map_from_input * input; its inverse is its transpose.
+  /// estimate_level sets the tilt only; layout::level_cloud composes the wall alignment's yaw
+  /// into it (align.rotation * tilt), so the map frame is levelled and, when applied, aligned.
+  Eigen::Matrix3d map_from_input = Eigen::Matrix3d::Identity();
   double tilt_deg = 0.0;  ///< angle between the measured up direction and z
   Eigen::Vector3d up_input = Eigen::Vector3d::UnitZ();  ///< measured up direction, input frame
   PlaneFit floor;                                       ///< in the input frame
@@ -76,6 +80,7 @@ struct LevelResult {
   std::string note;                   ///< why not levelled, or which planes were used
   LevelSupport support;               ///< of the plane the tilt rests on (the floor if found)
   std::vector<std::string> warnings;  ///< partial horizon, floor nearly unseen, refused tilt
+  WallAlignResult align;  ///< the yaw about +z after the tilt (layout::level_cloud), if asked
 };
 
 /// Estimates the levelling rotation. Deterministic for a fixed seed. Never throws on data it

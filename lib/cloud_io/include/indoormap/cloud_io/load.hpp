@@ -1,12 +1,14 @@
 #pragma once
-// Point-cloud loaders: PCD (ascii / binary / binary_compressed), PLY, plain text XYZ, and 3DTK
-// scan directories. PCL is used behind this header only; callers see indoormap::PointCloud.
-// The writers of the same formats are in indoormap/cloud_io/write.hpp.
+// Point-cloud loaders: PCD (ascii / binary / binary_compressed), PLY, plain text XYZ, LAS 1.2-1.4
+// (indoormap/cloud_io/las.hpp) and 3DTK scan directories. PCL is used behind this header only;
+// callers see indoormap::PointCloud. The writers of the same formats are in
+// indoormap/cloud_io/write.hpp.
 //
 // Output frame: metres, right-handed, z up. 3DTK data (cm, left-handed, y up) is converted
 // automatically (X = z/100, Y = -x/100, Z = y/100); other formats use LoadOptions::unit_m and
-// LoadOptions::up_axis. Non-finite points are dropped and counted. Formats, conventions and
-// errors: docs/input-formats.md.
+// LoadOptions::up_axis. LAS points are first moved to a local frame (source minus
+// LoadResult::source_offset, in double precision). Non-finite points are dropped and counted.
+// Formats, conventions and errors: docs/input-formats.md.
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -24,9 +26,10 @@ namespace indoormap::cloud_io {
 enum class UpAxis { kZ, kY };
 
 struct LoadOptions {
-  /// Metres per input unit for PCD / PLY / XYZ (0.01 for cm); must be > 0. Not for 3DTK.
+  /// Metres per input unit for PCD / PLY / XYZ / LAS (0.01 for cm, 0.3048 for a LAS in feet);
+  /// must be > 0. Not for 3DTK.
   double unit_m = 1.0;
-  UpAxis up_axis = UpAxis::kZ;  ///< PCD / PLY / XYZ only; 3DTK is converted automatically
+  UpAxis up_axis = UpAxis::kZ;  ///< PCD / PLY / XYZ / LAS; 3DTK is converted automatically
   int scan_first = -1;          ///< 3DTK directory: first scan number to read (-1: from the first)
   int scan_last = -1;           ///< 3DTK directory: last scan number, inclusive (-1: to the last)
   /// Budget on the points read (NaN / Inf included) over all inputs; an input that would exceed
@@ -42,7 +45,7 @@ void validate(const LoadOptions& options);
 
 struct InputReport {
   std::string path;
-  std::string format;                ///< "pcd", "ply", "xyz", "3dtk"
+  std::string format;                ///< "pcd", "ply", "xyz", "las", "3dtk"
   std::uint64_t points_read = 0;     ///< points in the file(s), including dropped ones
   std::uint64_t points_dropped = 0;  ///< NaN / Inf points dropped
   int scans = 0;                     ///< 3DTK: number of scan files read
@@ -51,6 +54,9 @@ struct InputReport {
   /// Doubts about the input that did not stop the load (e.g. a 3DTK scan without its pose file,
   /// read with the identity pose), each naming its file. The apps print them as warnings.
   std::vector<std::string> warnings;
+  /// LAS: the offset subtracted from every coordinate (source units, before unit_m and
+  /// up_axis): input frame = (source - offset) converted as for every input. Unset: not moved.
+  std::optional<Eigen::Vector3d> source_offset;
 };
 
 struct LoadResult {
@@ -58,6 +64,9 @@ struct LoadResult {
   /// one per distinct 3DTK scan position: sectors within 1 mm of each other count once).
   PointCloud cloud;
   std::vector<InputReport> inputs;
+  /// The local-frame offset of the LAS inputs (chosen by the first, shared by every later LAS
+  /// input; other formats are not moved). Unset when no LAS input was read.
+  std::optional<Eigen::Vector3d> source_offset;
 };
 
 /// Loads and merges every input. Throws InputError (names file and line) on bad input (missing,
@@ -65,8 +74,8 @@ struct LoadResult {
 /// point count would exceed options.max_points, UsageError for bad options or no paths.
 LoadResult load_clouds(const std::vector<std::string>& paths, const LoadOptions& options = {});
 
-/// Loads one input: a file (by extension: .pcd, .ply, .xyz / .txt / .csv, .3d) or a 3DTK scan
-/// directory.
+/// Loads one input: a file (by extension, case-insensitive: .pcd, .ply, .xyz / .txt / .csv, .las,
+/// .3d) or a 3DTK scan directory. .laz and .e57 are refused with a conversion hint.
 LoadResult load_cloud(const std::string& path, const LoadOptions& options = {});
 
 /// The parsed header of a PCD file, validated by us before PCL sees the file (Debian's PCL 1.13

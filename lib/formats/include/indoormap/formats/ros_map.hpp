@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "indoormap/core/cell.hpp"
 #include "indoormap/core/grid.hpp"
@@ -25,6 +26,9 @@ struct RosMapMeta {
   int negate = 0;
   double occupied_thresh = 0.65;
   double free_thresh = 0.196;
+  /// Written as "# <line>" lines after the keys (how to go back to the input frame, ...);
+  /// map_server and read_map_yaml ignore them. A newline in a line is written as a space.
+  std::vector<std::string> comments;
 };
 
 /// How write_map_yaml spells the file. Both read back the same; each app keeps the bytes it has
@@ -35,16 +39,18 @@ struct RosMapMeta {
 ///    always with a decimal point (scene-sim's ground_truth_layout.yaml; origin 0 is "0.0").
 enum class MapYamlStyle { kRosMap, kShortest };
 
-/// Writes a map_server YAML (image, [mode,] resolution, origin with yaw 0, negate, thresholds)
-/// atomically. The yaw of meta.origin is not written: it is always 0.0.
+/// Writes a map_server YAML (image, [mode,] resolution, origin with yaw 0, negate, thresholds,
+/// then meta.comments) atomically. The yaw of meta.origin is not written: it is always 0.0.
 void write_map_yaml(const std::filesystem::path& path, const RosMapMeta& meta,
                     MapYamlStyle style = MapYamlStyle::kRosMap);
 /// The meta of a grid: image name, the geometry's resolution and origin, default thresholds.
 RosMapMeta map_meta(const std::string& image, const GridGeometry& geometry);
 
 /// Writes <dir>/<stem>.pgm and <dir>/<stem>.yaml: occupied = wall or furniture, free, unknown.
+/// `comments` go to the YAML (RosMapMeta::comments).
 void write_ros_map(const std::filesystem::path& dir, const std::string& stem,
-                   const Grid<Cell>& layout, const GridGeometry& geometry);
+                   const Grid<Cell>& layout, const GridGeometry& geometry,
+                   const std::vector<std::string>& comments = {});
 
 /// A ROS map as map_server reads it: occupancy from the grey levels and the YAML thresholds.
 struct RosMap {

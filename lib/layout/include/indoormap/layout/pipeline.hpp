@@ -17,6 +17,7 @@ namespace indoormap::layout {
 
 struct MapParams {
   cloud::LevelParams level;
+  cloud::WallAlignParams align_walls;  ///< turn the levelled cloud so the walls run along x / y
   cloud::VoxelParams voxel;
   cloud::GhostParams ghosts;  ///< applied per origin (one scanner, or the cloud's origin spans)
   cloud::LayerParams layers;
@@ -55,7 +56,9 @@ MapResult make_map(PointCloud cloud, const MapParams& params);
 // whole cloud once before it knows the storeys.
 /// Every parameter check of make_map (UsageError naming the key).
 void validate(const MapParams& params);
-/// Levels the cloud in place (estimate_level, rotate); "not levelled" goes to warnings.
+/// Levels the cloud in place (estimate_level, then estimate_wall_alignment when
+/// params.align_walls.enabled; one rotate by the composed map_from_input); "not levelled" and
+/// "not aligned" go to warnings.
 cloud::LevelResult level_cloud(PointCloud& cloud, const MapParams& params,
                                std::vector<std::string>& warnings);
 /// Everything after voxelising: r.level, r.bounds and r.voxels set, `cloud` levelled (map frame).

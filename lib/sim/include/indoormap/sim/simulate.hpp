@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "indoormap/core/progress.hpp"
 #include "indoormap/sim/scene.hpp"
 
 namespace indoormap::sim {
@@ -20,6 +21,8 @@ struct SimOptions {
   double sector_deg = 0.0;
   /// Refuse scenes that would cast more rays than this (BudgetError), before allocating.
   std::uint64_t max_rays = 400'000'000;
+  /// Rays cast of ray_count(scene), about every 100,000 rays (empty: none).
+  ProgressFn progress;
 };
 
 /// One scan: points [begin, end) of SimResult::points, from one scanner position and sector.
@@ -53,10 +56,10 @@ class Rng {
  public:
   explicit Rng(std::uint64_t seed);
   std::uint64_t next();
-  double uniform();                         ///< [0, 1)
+  double uniform();  ///< [0, 1)
   double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-  int uniform_int(int lo, int hi);          ///< [lo, hi] inclusive
-  double normal();                          ///< standard normal (Marsaglia polar method)
+  int uniform_int(int lo, int hi);  ///< [lo, hi] inclusive
+  double normal();                  ///< standard normal (Marsaglia polar method)
 
  private:
   std::uint64_t s_[4];
