@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 
 #include <new>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,12 @@ std::vector<std::string> paths_of(const py::object& cloud) {
   return paths;
 }
 
+// LAS: the offset subtracted on reading (source units); None for the other formats.
+py::object offset_of(const std::optional<Eigen::Vector3d>& offset) {
+  if (!offset) return py::none();
+  return py::make_tuple(offset->x(), offset->y(), offset->z());
+}
+
 py::list inputs_list(const std::vector<cloud_io::InputReport>& inputs) {
   py::list out;
   for (const auto& in : inputs) {
@@ -59,6 +66,7 @@ py::list inputs_list(const std::vector<cloud_io::InputReport>& inputs) {
     d["points_dropped"] = in.points_dropped;
     d["scans"] = in.scans;
     d["scanner_known"] = in.scanner_known;
+    d["source_offset"] = offset_of(in.source_offset);
     py::list warnings;
     for (const auto& w : in.warnings) warnings.append(w);
     d["warnings"] = warnings;
@@ -81,6 +89,7 @@ py::dict load_cloud(const py::object& path, const py::object& params) {
   d["frame"] = "input frame after unit / axis conversion: metres, z up";
   d["format"] = r.inputs.size() == 1 ? r.inputs[0].format : std::string("merged");
   d["inputs"] = inputs_list(r.inputs);
+  d["source_offset"] = offset_of(r.source_offset);
   return d;
 }
 
@@ -189,8 +198,9 @@ PYBIND11_MODULE(indoormap, m) {
       "default_params", [] { return py_of(app::to_json(app::PipelineConfig{})); },
       "The default parameters as a params dict (the keys of config/default.yaml).");
   m.def("load_cloud", &load_cloud, py::arg("path"), py::arg("params") = py::none(),
-        "Loads a cloud (.pcd, .ply, .xyz, 3DTK directory; a list merges) with the apps' loader: "
-        "{'points': (N,3) float32, 'scanners': (K,3), 'format', 'inputs', 'frame'}.");
+        "Loads a cloud (.pcd, .ply, .xyz, .las, 3DTK directory; a list merges) with the apps' "
+        "loader: {'points': (N,3) float32, 'scanners': (K,3), 'format', 'inputs', 'frame', "
+        "'source_offset'}.");
   m.def("run_pipeline", &run_pipeline, py::arg("cloud"), py::arg("params") = py::none(),
         py::arg("storey") = -1, py::arg("quiet") = false,
         "Runs pcd-to-map's pipeline on a path, a list of paths or an (N,3) array (metres, z up) "

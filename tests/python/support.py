@@ -1,5 +1,6 @@
 """Shared helpers of the Python tests (run by ctest: tests/CMakeLists.txt sets the environment)."""
 import os
+import struct
 import subprocess
 import tempfile
 
@@ -71,3 +72,23 @@ def box_room(w=4.0, d=3.0, h=2.6, step=0.05, seed=1):
     cabinet = np.column_stack([cx.ravel(), cy.ravel(), np.full(cx.size, 0.9)])
     pts = np.vstack([floor, ceiling, south, north, west, east, cabinet])
     return (pts + rng.normal(0.0, 0.003, pts.shape)).astype(np.float32)
+
+
+def write_las(path, points, offset, scale=0.001):
+    """points (N, 3) in metres as a LAS 1.2 point format 0 file whose header offset is `offset`
+    (source coordinates = offset + points, stored as int32 multiples of `scale`)."""
+    q = np.round(np.asarray(points, dtype=np.float64) / scale).astype("<i4")
+    src = q * scale + np.asarray(offset, dtype=np.float64)
+    lo, hi = src.min(axis=0), src.max(axis=0)
+    header = struct.pack("<4sHH16sBB32s32sHHHIIBHI5I3d3d6d", b"LASF", 0, 0, b"\0" * 16, 1, 2,
+                         b"indoormap test", b"support.py", 1, 2026, 227, 227, 0, 0, 20, len(q),
+                         len(q), 0, 0, 0, 0, scale, scale, scale, *offset,
+                         hi[0], lo[0], hi[1], lo[1], hi[2], lo[2])
+    assert len(header) == 227
+    rec = np.zeros(len(q), dtype=[("xyz", "<i4", 3), ("intensity", "<u2"), ("flags", "u1"),
+                                  ("cls", "u1"), ("angle", "i1"), ("user", "u1"),
+                                  ("source", "<u2")])
+    rec["xyz"], rec["flags"] = q, 0b00001001  # return 1 of 1
+    with open(path, "wb") as f:
+        f.write(header + rec.tobytes())
+    return q * scale  # the local coordinates, as exact as the file holds them

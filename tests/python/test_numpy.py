@@ -1,10 +1,11 @@
 """indoormap.run_pipeline on a hand-made numpy cloud: a 4 x 3 m box room with a cabinet."""
+import os
 import unittest
 
 import numpy as np
 
 import indoormap
-from support import box_room
+from support import box_room, scratch, write_las
 
 W, D = 4.0, 3.0
 SCANNER = (2.0, 1.5, 1.2)
@@ -90,6 +91,47 @@ class NumpyRoom(unittest.TestCase):
                                      {"input": {"scanners": [list(SCANNER)]},
                                       "voxel": {"cell_m": 0.05}}, quiet=True)
         np.testing.assert_array_equal(r64["map"], self.r["map"])
+
+    def test_align_walls_param_turns_a_rotated_room_onto_the_axes(self):
+        turn = np.radians(12.0)
+        rz = np.array([[np.cos(turn), -np.sin(turn), 0.0], [np.sin(turn), np.cos(turn), 0.0],
+                       [0.0, 0.0, 1.0]])
+        pts = (box_room(6.0, 4.0).astype(np.float64) @ rz.T).astype(np.float32)
+        params = {"input": {"scanners": [(rz @ [3.0, 2.0, 1.2]).tolist()]},
+                  "voxel": {"cell_m": 0.05}}
+        plain = indoormap.run_pipeline(pts, params, quiet=True)
+        params["align_walls"] = {"enabled": True}
+        aligned = indoormap.run_pipeline(pts, params, quiet=True)
+
+        def worst_edge_deg(poly):  # the largest angle of an edge off the nearest axis
+            d = np.roll(poly, -1, axis=0) - poly
+            a = np.degrees(np.arctan2(d[:, 1], d[:, 0])) % 90.0
+            return np.max(np.minimum(a, 90.0 - a))
+
+        self.assertTrue(aligned["room"]["closed"], aligned["room"]["reason"])
+        self.assertLess(worst_edge_deg(aligned["room"]["polygon_m"]), 1.0)
+        self.assertGreater(worst_edge_deg(plain["room"]["polygon_m"]), 10.0)
+        # map_from_input undoes the turn: R = rz^T, within the levelling's tilt.
+        np.testing.assert_allclose(aligned["summary"]["levelling"]["map_from_input"], rz.T,
+                                   atol=0.01)
+        self.assertLess(abs(aligned["room"]["area_m2"] - 24.0), 2.4)
+
+    def test_las_loads_into_its_local_frame_with_the_offset(self):
+        path = os.path.join(scratch(), "room.las")
+        offset = (500000.0, 5000000.0, 100.0)  # georeferenced: UTM-like
+        local = write_las(path, self.points, offset)
+        d = indoormap.load_cloud(path)
+        self.assertEqual(d["format"], "las")
+        self.assertEqual(d["source_offset"], offset)
+        self.assertEqual(d["inputs"][0]["source_offset"], offset)
+        np.testing.assert_allclose(d["points"], local, atol=1e-6)
+        self.assertEqual(d["scanners"].shape, (0, 3))  # LAS has no scanner position
+        # Mapped as the numpy array of the same local points (given the same scanner).
+        params = {"input": {"scanners": [list(SCANNER)]}, "voxel": {"cell_m": 0.05}}
+        r = indoormap.run_pipeline(path, params, quiet=True)
+        np.testing.assert_array_equal(r["map"], indoormap.run_pipeline(
+            local.astype(np.float32), params, quiet=True)["map"])
+        self.assertEqual(r["summary"]["inputs"][0]["source_offset"], list(offset))
 
 
 if __name__ == "__main__":

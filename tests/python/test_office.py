@@ -31,6 +31,7 @@ class LoadOffice(unittest.TestCase):
         self.assertEqual(d["points"].dtype, np.float32)
         self.assertEqual(d["points"].shape, (int(header["POINTS"]), 3))
         self.assertEqual(d["format"], "pcd")
+        self.assertIsNone(d["source_offset"])  # only LAS inputs are moved
         self.assertEqual(d["inputs"][0]["points_read"], int(header["POINTS"]))
         view = [float(v) for v in header["VIEWPOINT"].split()[:3]]
         np.testing.assert_allclose(d["scanners"], [view], atol=1e-6)
