@@ -17,13 +17,15 @@
 # Exit code: 0 every input done, 1 some input failed (see the index), 2 bad usage.
 # Internal modes (used by GNU parallel and scripts/batch_slurm.sh):
 #   scripts/batch.sh --run-one K OUTROOT LIST [-- ARGS...]   input K only (status in OUTROOT/status/)
-#   scripts/batch.sh --index OUTROOT                          (re)writes the index
+#   scripts/batch.sh --prepare OUTROOT LIST    a new run: clears OUTROOT/status, writes the
+#                                              inputs to OUTROOT/inputs.txt, prints their number
+#   scripts/batch.sh --index OUTROOT                         (re)writes the index
 set -uo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(dirname "$here")"
 python="${BATCH_PYTHON:-/usr/bin/python3}"
 
-usage() { sed -n '2,24p' "$0"; }
+usage() { sed -n '2,26p' "$0"; }
 die() { echo "batch.sh: $*" >&2; exit 2; }
 
 # inputs LIST: the input lines of LIST (no blank or comment lines), one a line.
@@ -73,7 +75,20 @@ run_one() {
   return $rc
 }
 
+# prepare OUTROOT LIST: a new run: no status of an earlier one, and OUTROOT/inputs.txt the
+# inputs, so that the index has a row for an input whose run never finished. Prints N.
+prepare() {
+  mkdir -p "$1" || die "cannot create '$1'"
+  rm -rf "$1/status"  # the index is of this run only
+  inputs "$2" >"$1/inputs.txt" || die "'$2' lists no input"
+  wc -l <"$1/inputs.txt"
+}
+
 case "${1:-}" in
+  --prepare)
+    [ $# -eq 3 ] || die "--prepare OUTROOT LIST"
+    prepare "$2" "$3"
+    exit $? ;;
   --run-one)
     [ $# -ge 4 ] || die "--run-one K OUTROOT LIST [-- ARGS...]"
     k=$2 outroot=$3 list=$4
@@ -106,11 +121,8 @@ shift
 [ -n "$outroot" ] || die "no output root given: use -o OUTROOT"
 [ -f "$list" ] || die "'$list': no such list file"
 command -v parallel >/dev/null || die "GNU parallel not found (Debian: apt-get install parallel)"
-n=$(inputs "$list" | wc -l)
-[ "$n" -gt 0 ] || die "'$list' lists no input"
 binary >/dev/null || exit 2
-mkdir -p "$outroot" || die "cannot create '$outroot'"
-rm -rf "$outroot/status"  # the index is of this run only
+n=$(prepare "$outroot" "$list") || exit 2
 
 echo "batch.sh: $n inputs, $jobs at a time, into $outroot" >&2
 # --halt never: a failed input does not stop the others. -q: the arguments reach run-one as

@@ -5,9 +5,11 @@ Usage: batch_index.py OUTROOT
 
 Reads OUTROOT/status/*.tsv (one per input, written by `scripts/batch.sh --run-one`: K, input
 line, output directory name, exit code, seconds, log) and, for the inputs that succeeded, the main
-figures of their summary.json (the first mapped storey's when the cloud has several). Writes both
-files atomically (temporary name, then rename). Exit code: 0 when every input listed succeeded,
-1 when one failed, 2 when there is no status at all.
+figures of their summary.json (the first mapped storey's when the cloud has several). An input of
+OUTROOT/inputs.txt (`batch.sh --prepare`) without a status line, whose run was killed before it
+ended (a Slurm time or memory limit, a lost node, parallel stopped), gets a row with status
+"not run". Writes both files atomically (temporary name, then rename). Exit code: 0 when every
+input succeeded, 1 when one failed or did not run, 2 when there is no status at all.
 """
 import csv
 import io
@@ -72,6 +74,23 @@ def row_of(outroot, fields):
     return row
 
 
+def missing_rows(outroot, done):
+    """Rows for the inputs of OUTROOT/inputs.txt whose run left no status line."""
+    try:
+        with open(os.path.join(outroot, "inputs.txt"), encoding="utf-8") as f:
+            lines = [l.rstrip("\n") for l in f]
+    except OSError:
+        return []  # an OUTROOT of an older batch.sh: only the status lines are known
+    rows = []
+    for k, line in enumerate(lines, start=1):
+        if k not in done:
+            row = {c: None for c in COLUMNS}
+            row.update(k=k, input=line, status="not run",
+                       error="no status line: the run of this input did not finish")
+            rows.append(row)
+    return rows
+
+
 def csv_cell(value):
     """None as an empty cell, booleans as JSON spells them."""
     if value is None:
@@ -95,30 +114,35 @@ def main():
     outroot = sys.argv[1]
     status = os.path.join(outroot, "status")
     names = sorted(n for n in os.listdir(status) if n.endswith(".tsv")) if os.path.isdir(status) else []
-    if not names:
-        print(f"batch_index.py: no status in {status}: nothing ran", file=sys.stderr)
-        return 2
     rows = []
     for n in names:
         with open(os.path.join(status, n), encoding="utf-8") as f:
             fields = f.read().rstrip("\n").split("\t")
         rows.append(row_of(outroot, fields))
+    rows += missing_rows(outroot, {r["k"] for r in rows})
+    if not rows:
+        print(f"batch_index.py: no status in {status} and no {outroot}/inputs.txt: nothing ran",
+              file=sys.stderr)
+        return 2
     rows.sort(key=lambda r: r["k"])
-    failed = [r for r in rows if r["status"] != "ok"]
+    failed = [r for r in rows if r["status"] == "failed"]
+    not_run = [r for r in rows if r["status"] == "not run"]
+    ok = len(rows) - len(failed) - len(not_run)
     write_atomic(os.path.join(outroot, "index.json"), json.dumps(
-        {"inputs": len(rows), "ok": len(rows) - len(failed), "failed": len(failed), "rows": rows},
-        indent=2) + "\n")
+        {"inputs": len(rows), "ok": ok, "failed": len(failed), "not_run": len(not_run),
+         "rows": rows}, indent=2) + "\n")
     buf = io.StringIO()
     w = csv.DictWriter(buf, fieldnames=COLUMNS, lineterminator="\n")
     w.writeheader()
     for r in rows:
         w.writerow({c: csv_cell(r[c]) for c in COLUMNS})
     write_atomic(os.path.join(outroot, "index.csv"), buf.getvalue())
-    print(f"batch: {len(rows)} inputs, {len(rows) - len(failed)} done, {len(failed)} failed; "
+    print(f"batch: {len(rows)} inputs, {ok} done, {len(failed)} failed, {len(not_run)} not run; "
           f"index: {os.path.join(outroot, 'index.csv')}, index.json", file=sys.stderr)
-    for r in failed:
-        print(f"batch: failed: {r['input']} (exit {r['exit_code']}): {r['error']}", file=sys.stderr)
-    return 1 if failed else 0
+    for r in failed + not_run:
+        code = "" if r["exit_code"] is None else f" (exit {r['exit_code']})"
+        print(f"batch: {r['status']}: {r['input']}{code}: {r['error']}", file=sys.stderr)
+    return 1 if failed or not_run else 0
 
 
 if __name__ == "__main__":

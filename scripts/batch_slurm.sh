@@ -35,10 +35,8 @@ case "$mode" in
     shift 2
     [ "${1:-}" = "--" ] && shift
     [ -f "$list" ] || die "'$list': no such list file"
-    n=$(grep -c -v -E '^[[:space:]]*(#|$)' "$list" || true)
-    [ "$n" -gt 0 ] || die "'$list' lists no input"
+    n=$("$batch" --prepare "$outroot" "$list") || exit 2  # the index is of this submission only
     mkdir -p "$outroot/slurm"
-    rm -rf "$outroot/status"  # the index is of this submission only
     self="$root/scripts/batch_slurm.sh"
     array_job=$(sbatch --parsable --array="1-$n%${INDOORMAP_ARRAY_MAX:-50}" \
       --export="ALL,INDOORMAP_ROOT=$root" --output="$outroot/slurm/task-%A_%a.out" \

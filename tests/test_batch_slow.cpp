@@ -57,24 +57,63 @@ std::vector<std::string> lines_of(const std::string& text) {
   return out;
 }
 
-}  // namespace
-
-TEST(Batch, ParallelRecipeReportsEachInputAndIndexesAll) {
-  if (std::system("command -v parallel >/dev/null 2>&1") != 0)
-    GTEST_SKIP() << "GNU parallel not installed (scripts/setup.sh installs it)";
-  const fs::path dir = indoormap::test::scratch_dir();
+// Three inputs in dir: two box rooms and a truncated PCD (input 2); returns the list file.
+fs::path three_inputs(const fs::path& dir) {
   indoormap::test::write_text(dir / "small.xyz", box_room_xyz(4.0, 3.0, 1));
   indoormap::test::write_text(dir / "wide.xyz", box_room_xyz(6.0, 4.0, 2));
   // The office cloud cut in its data section: its header promises more points than it holds.
   const std::string office =
       indoormap::test::read_text(fs::path(INDOORMAP_SOURCE_DIR) / "clouds/office/cloud.pcd");
-  ASSERT_GT(office.size(), 100000u);
+  EXPECT_GT(office.size(), 100000u);
   indoormap::test::write_text(dir / "broken.pcd", office.substr(0, 50000));
   // One line carries its own option (the scanner of that input), as docs/batch.md shows.
   indoormap::test::write_text(
       dir / "inputs.txt", "# three inputs\n" + (dir / "small.xyz").string() +
                               " --scanner 2,1.5,1.2\n" + (dir / "broken.pcd").string() + "\n\n" +
                               (dir / "wide.xyz").string() + "\n");
+  return dir / "inputs.txt";
+}
+
+// A stand-in for Slurm's sbatch: logs its arguments, copies the script to a spool directory (as
+// Slurm does), runs an --array=1-N%M job's tasks one after the other with SLURM_ARRAY_TASK_ID and
+// the --export variables, runs any other job at once (the index job's afterany dependency holds:
+// the tasks have ended), and prints a job id.
+// clang-format off
+const char* kFakeSbatch = R"sh(#!/usr/bin/env bash
+here="$(dirname "$0")"
+echo "$*" >>"$here/calls.txt"
+array="" script=""
+while [ $# -gt 0 ] && [ -z "$script" ]; do
+  case "$1" in
+    --array=*) array="${1#--array=}" ;;
+    --export=ALL,*) export "${1#--export=ALL,}" ;;
+    --*) ;;
+    *) script=$1 ;;
+  esac
+  shift
+done
+mkdir -p "$here/spool" && cp "$script" "$here/spool/job.sh"
+if [ -n "$array" ]; then
+  range="${array%%%*}"
+  for k in $(seq "${range%-*}" "${range#*-}"); do
+    SLURM_ARRAY_TASK_ID=$k bash "$here/spool/job.sh" "$@" >/dev/null 2>&1
+    echo "task $k exit $?" >>"$here/calls.txt"
+  done
+else
+  bash "$here/spool/job.sh" "$@" >/dev/null 2>&1
+  echo "job exit $?" >>"$here/calls.txt"
+fi
+echo "$((1000 + $(wc -l <"$here/calls.txt")))"
+)sh";
+// clang-format on
+
+}  // namespace
+
+TEST(Batch, ParallelRecipeReportsEachInputAndIndexesAll) {
+  if (std::system("command -v parallel >/dev/null 2>&1") != 0)
+    GTEST_SKIP() << "GNU parallel not installed (scripts/setup.sh installs it)";
+  const fs::path dir = indoormap::test::scratch_dir();
+  three_inputs(dir);
   const fs::path out = dir / "out";
   const std::string cmd = std::string(INDOORMAP_SOURCE_DIR) + "/scripts/batch.sh -j 2 -b " +
                           INDOORMAP_BIN_DIR + "/pcd-to-map -o " + out.string() + " " +
@@ -101,6 +140,7 @@ TEST(Batch, ParallelRecipeReportsEachInputAndIndexesAll) {
   EXPECT_EQ(index["inputs"], 3);
   EXPECT_EQ(index["ok"], 2);
   EXPECT_EQ(index["failed"], 1);
+  EXPECT_EQ(index["not_run"], 0);
   ASSERT_EQ(index["rows"].size(), 3u);
   for (int k = 0; k < 3; ++k) {
     const json& row = index["rows"][k];
@@ -137,4 +177,64 @@ TEST(Batch, ParallelRecipeReportsEachInputAndIndexesAll) {
   EXPECT_EQ(csv[0].rfind("k,input,outdir,status,exit_code,seconds,error,", 0), 0u) << csv[0];
   EXPECT_NE(csv[2].find(",failed,2,"), std::string::npos) << csv[2];
   EXPECT_NE(csv[1].find(",0001_small,ok,0,"), std::string::npos) << csv[1];
+
+  // A run killed before its status line (a Slurm time limit, a lost node): the index of the
+  // same OUTROOT still has its row, "not run", from OUTROOT/inputs.txt.
+  fs::remove(out / "status" / "0003_wide.tsv");
+  const std::string reindex = std::string(INDOORMAP_SOURCE_DIR) + "/scripts/batch.sh --index " +
+                              out.string() + " 2>" + (dir / "stderr2").string();
+  const int status2 = std::system(reindex.c_str());
+  ASSERT_TRUE(WIFEXITED(status2));
+  EXPECT_EQ(WEXITSTATUS(status2), 1);
+  const json again = json::parse(indoormap::test::read_text(out / "index.json"));
+  EXPECT_EQ(again["ok"], 1);
+  EXPECT_EQ(again["not_run"], 1);
+  ASSERT_EQ(again["rows"].size(), 3u);
+  EXPECT_EQ(again["rows"][2]["status"], "not run");
+  EXPECT_EQ(again["rows"][2]["input"], (dir / "wide.xyz").string());
+  EXPECT_TRUE(again["rows"][2]["exit_code"].is_null());
+}  // namespace
+
+// scripts/batch_slurm.sh submit under the fake sbatch: an array of one task per input (each
+// batch.sh --run-one, the failure kept to its task) and an afterany index job over them.
+TEST(Batch, SlurmScriptSubmitsAnArrayAndAnIndexJob) {
+  const fs::path dir = indoormap::test::scratch_dir();
+  const fs::path list = three_inputs(dir);
+  const fs::path fake = dir / "slurm";
+  fs::create_directories(fake);
+  indoormap::test::write_text(fake / "sbatch", kFakeSbatch);
+  fs::permissions(fake / "sbatch", fs::perms::owner_all);
+  const fs::path out = dir / "out";
+  const std::string cmd = "PATH=" + fake.string() + ":$PATH PCD_TO_MAP=" + INDOORMAP_BIN_DIR +
+                          "/pcd-to-map " + INDOORMAP_SOURCE_DIR +
+                          "/scripts/batch_slurm.sh submit " + list.string() + " " + out.string() +
+                          " -- --cell-m 0.1 2>" + (dir / "stderr").string();
+  const int status = std::system(cmd.c_str());
+  const std::string err = indoormap::test::read_text(dir / "stderr");
+  ASSERT_TRUE(WIFEXITED(status)) << err;
+  EXPECT_EQ(WEXITSTATUS(status), 0) << err;  // submitted
+  const auto calls = lines_of(indoormap::test::read_text(fake / "calls.txt"));
+  ASSERT_EQ(calls.size(), 6u) << indoormap::test::read_text(fake / "calls.txt");
+  EXPECT_NE(calls[0].find("--array=1-3%50"), std::string::npos) << calls[0];
+  EXPECT_NE(calls[0].find(" task " + list.string() + " " + out.string() + " --cell-m 0.1"),
+            std::string::npos)
+      << calls[0];
+  EXPECT_EQ(calls[1], "task 1 exit 0");
+  EXPECT_EQ(calls[2], "task 2 exit 2");  // the broken input's task fails alone
+  EXPECT_EQ(calls[3], "task 3 exit 0");
+  EXPECT_NE(calls[4].find("--dependency=afterany:1004 "), std::string::npos) << calls[4];
+  EXPECT_NE(calls[4].find(" index " + out.string()), std::string::npos) << calls[4];
+  EXPECT_EQ(calls[5], "job exit 1");  // the index job: one input failed
+  EXPECT_NE(err.find("3 inputs: array job 1004"), std::string::npos) << err;
+
+  const json index = json::parse(indoormap::test::read_text(out / "index.json"));
+  EXPECT_EQ(index["ok"], 2);
+  EXPECT_EQ(index["failed"], 1);
+  ASSERT_EQ(index["rows"].size(), 3u);
+  EXPECT_EQ(index["rows"][1]["exit_code"], 2);
+  for (const char* name : {"0001_small", "0003_wide"}) {
+    const json s = json::parse(indoormap::test::read_text(out / name / "summary.json"));
+    EXPECT_DOUBLE_EQ(s["parameters"]["voxel"]["cell_m"].get<double>(), 0.1) << name;
+  }
+  EXPECT_FALSE(fs::exists(out / "0002_broken"));
 }
