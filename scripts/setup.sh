@@ -10,9 +10,10 @@ cd "$(dirname "$0")/.."
 
 packages=(cmake g++ ninja-build pkg-config libpcl-dev libeigen3-dev libopencv-dev libyaml-cpp-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev lld
-  libssl-dev chromium)
+  libssl-dev chromium pybind11-dev python3-dev python3-numpy parallel)
 # libssl-dev: SHA-256 of the inputs (summary.json "provenance"); chromium: the headless-browser
-# test of report.html (tests/test_report_slow.cpp).
+# test of report.html (tests/test_report_slow.cpp); pybind11-dev, python3-dev, python3-numpy: the
+# Python module (apps/python, tests/python); parallel: the batch recipe (scripts/batch.sh).
 # The sanitizer + fuzz build (-DINDOORMAP_FUZZ=ON: ./test.sh --sanitize, scripts/fuzz.sh) needs
 # clang and its sanitizer / libFuzzer runtimes.
 fuzz=0

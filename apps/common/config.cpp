@@ -214,6 +214,12 @@ void merge_config_file(PipelineConfig& config, const std::string& path) {
   read_config_file(path, [&](auto&& f) { visit(config, f); });
 }
 
+void merge_config_tree(PipelineConfig& config, const YAML::Node& root, const std::string& name) {
+  const auto table = [&](auto&& f) { visit(config, f); };
+  check_config_tree(root, name, config_keys(table));
+  read_config_tree(root, name, table);
+}
+
 void validate(const PipelineConfig& c) {
   auto require = [](bool ok, const std::string& what) {
     if (!ok) throw UsageError("invalid parameter " + what);

@@ -15,6 +15,10 @@
 #include "indoormap/objects/objects.hpp"
 #include "plan_config.hpp"
 
+namespace YAML {
+class Node;
+}
+
 namespace indoormap::app {
 
 struct PipelineConfig {
@@ -31,6 +35,9 @@ struct PipelineConfig {
 
 /// Reads a YAML file over the defaults. Throws InputError naming the file, key and line.
 void merge_config_file(PipelineConfig& config, const std::string& path);
+/// The same from a tree built in memory (the Python bindings' params dict), checked by the same
+/// rules (unknown sections and keys refused); `name` stands for the file in the errors.
+void merge_config_tree(PipelineConfig& config, const YAML::Node& root, const std::string& name);
 /// Checks ranges (cell_m > 0, ...). Throws UsageError naming the key.
 void validate(const PipelineConfig& config);
 /// The effective configuration as YAML (what --print-config prints) and as JSON (summary.json).

@@ -75,7 +75,13 @@ YAML::Node load_yaml_file(const std::string& path, const std::string& role) {
 YAML::Node load_config_tree(const std::string& path,
                             const std::map<std::string, std::set<std::string>>& known) {
   const YAML::Node root = load_yaml_file(path, "the config file");
-  if (root.IsNull()) return root;  // an empty file means "all defaults"
+  check_config_tree(root, path, known);
+  return root;
+}
+
+void check_config_tree(const YAML::Node& root, const std::string& path,
+                       const std::map<std::string, std::set<std::string>>& known) {
+  if (root.IsNull()) return;  // an empty file means "all defaults"
   std::set<std::string> section_names;
   for (const auto& [name, keys] : known)
     if (!name.empty()) section_names.insert(name);
@@ -113,7 +119,6 @@ YAML::Node load_config_tree(const std::string& path,
         throw InputError(path, "unknown key '" + name + "." + key + "'", line_of(kv.first));
     }
   }
-  return root;
 }
 
 void ConfigReader::fail(const YAML::Node& n, const std::string& key,

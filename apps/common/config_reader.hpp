@@ -53,6 +53,11 @@ YAML::Node load_yaml_file(const std::string& path, const std::string& role = "th
 YAML::Node load_config_tree(const std::string& path,
                             const std::map<std::string, std::set<std::string>>& known);
 
+/// load_config_tree's checks on a tree built in memory (the Python bindings' params dict): `name`
+/// stands for the file in the errors ("params: unknown key 'voxel.cel_m'"). A null root passes.
+void check_config_tree(const YAML::Node& root, const std::string& name,
+                       const std::map<std::string, std::set<std::string>>& known);
+
 /// Typed values out of one YAML document. Every error is InputError(file, "key 'K': problem",
 /// line of the node).
 class ConfigReader {
@@ -158,13 +163,12 @@ std::map<std::string, std::set<std::string>> config_keys(Table&& table) {
   return known;
 }
 
-/// Reads a YAML config file over the table's fields (fields not in the file keep their values).
-/// Throws InputError naming the file, key and line.
+/// Reads an already checked tree (load_config_tree, check_config_tree) over the table's fields;
+/// errors name `name` as their file.
 template <class Table>
-void read_config_file(const std::string& path, Table&& table) {
-  const YAML::Node root = load_config_tree(path, config_keys(table));
+void read_config_tree(const YAML::Node& root, const std::string& name, Table&& table) {
   if (root.IsNull()) return;
-  const ConfigReader rd(path);
+  const ConfigReader rd(name);
   table([&](const char* s, const char* k, auto&& v) {
     const YAML::Node sec = *s ? root[s] : root;
     if (!sec) return;
@@ -172,6 +176,13 @@ void read_config_file(const std::string& path, Table&& table) {
     if (!n) return;
     ConfigValueOf<decltype(v)>::read(rd, n, *s ? std::string(s) + "." + k : std::string(k), v);
   });
+}
+
+/// Reads a YAML config file over the table's fields (fields not in the file keep their values).
+/// Throws InputError naming the file, key and line.
+template <class Table>
+void read_config_file(const std::string& path, Table&& table) {
+  read_config_tree(load_config_tree(path, config_keys(table)), path, table);
 }
 
 /// The table as YAML (what --print-config prints), readable by read_config_file.

@@ -128,13 +128,17 @@ void finish_summary(json& summary, const fs::path& out, std::vector<std::string>
 }
 
 PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_input_points) {
-  PipelineRun run;
   const auto t0 = std::chrono::steady_clock::now();
   cfg.load.progress = load_progress(cli.quiet);
   cloud_io::LoadResult loaded = cloud_io::load_clouds(cli.inputs, cfg.load);
   cfg.load.progress = nullptr;  // ends the last file's bar line
-  run.load_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return map_loaded(std::move(loaded), cli, cfg, keep_input_points, ms_since(t0));
+}
+
+PipelineRun map_loaded(cloud_io::LoadResult loaded, const PipelineCli& cli, PipelineConfig& cfg,
+                       bool keep_input_points, double load_ms) {
+  PipelineRun run;
+  run.load_ms = load_ms;
   run.inputs = loaded.inputs;
   run.source_offset = loaded.source_offset;
   std::vector<std::string> input_warnings;

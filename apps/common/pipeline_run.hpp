@@ -65,6 +65,12 @@ void finish_summary(nlohmann::json& summary, const std::filesystem::path& out,
 /// re-thrown naming all inputs.
 PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& config, bool keep_input_points);
 
+/// run_pipeline's second half: the map of clouds already loaded (in load_ms), e.g. the Python
+/// bindings' numpy points; cli.inputs name the data in errors. config's progress hooks are set
+/// for the run (cli.quiet) and cleared after it.
+PipelineRun map_loaded(cloud_io::LoadResult loaded, const PipelineCli& cli, PipelineConfig& config,
+                       bool keep_input_points, double load_ms);
+
 /// map.pgm + map.yaml (the navigation map; with LAS inputs, comments on the way back to the source
 /// frame) and its picture map.png, layout.pgm, layout.png. Returns the file names.
 std::vector<std::string> write_map_outputs(const std::filesystem::path& out, const PipelineRun& run,

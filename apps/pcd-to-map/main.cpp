@@ -18,22 +18,13 @@
 #include "report.hpp"
 #include "rooms_outputs.hpp"
 #include "route_outputs.hpp"
+#include "storey_work.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
 using nlohmann::json;
 
 namespace {
-
-struct StoreyWork {
-  int index = 0;
-  layout::MapResult map;
-  objects::ObjectsResult objs;
-  border::BorderResult border;
-  app::StoreyRooms rooms;
-  std::size_t furniture_count = 0;
-  double objects_ms = 0.0, border_ms = 0.0;
-};
 
 int run(int argc, char** argv) {
   CLI::App cli_app{
@@ -86,19 +77,10 @@ int run(int argc, char** argv) {
     throw UsageError("--start / --goal on a cloud of " + std::to_string(run.storeys.size()) +
                      " storeys: pick one with --storey K");
   // Compute every storey first, then write everything (all or nothing).
-  std::vector<StoreyWork> work;
-  for (std::size_t i = 0; i < run.mapped.size(); ++i) {
-    StoreyWork w;
-    w.index = run.mapped[i];
-    w.map = i == 0 ? std::move(run.map) : std::move(run.more_maps[i - 1]);
-    w.objs = app::timed_objects(w.map, cfg.objects, &w.objects_ms);
-    w.rooms = app::find_storey_rooms(w.map, w.objs);  // drops the inner walls from the objects
-    w.border = app::timed_border(w.map, cfg.border, &w.border_ms);
-    w.furniture_count = w.objs.objects.size();
-    app::add_border_objects(w.objs, w.border, cfg.objects.min_area_m2);
-    app::assign_rooms(w.rooms, w.objs);
-    work.push_back(std::move(w));
-  }
+  std::vector<app::StoreyWork> work;
+  for (std::size_t i = 0; i < run.mapped.size(); ++i)
+    work.push_back(app::compute_storey(
+        run.mapped[i], i == 0 ? std::move(run.map) : std::move(run.more_maps[i - 1]), cfg));
 
   const auto t_write = std::chrono::steady_clock::now();
   app::OutputSet set(out, "pcd-to-map");  // all or nothing: docs/pcd-to-map.md, "Outputs"

@@ -1,0 +1,23 @@
+#include "storey_work.hpp"
+
+#include <utility>
+
+#include "objects_outputs.hpp"
+#include "pipeline_run.hpp"
+
+namespace indoormap::app {
+
+StoreyWork compute_storey(int index, layout::MapResult map, const PipelineConfig& cfg) {
+  StoreyWork w;
+  w.index = index;
+  w.map = std::move(map);
+  w.objs = timed_objects(w.map, cfg.objects, &w.objects_ms);
+  w.rooms = find_storey_rooms(w.map, w.objs);  // drops the inner walls from the objects
+  w.border = timed_border(w.map, cfg.border, &w.border_ms);
+  w.furniture_count = w.objs.objects.size();
+  add_border_objects(w.objs, w.border, cfg.objects.min_area_m2);
+  assign_rooms(w.rooms, w.objs);
+  return w;
+}
+
+}  // namespace indoormap::app
