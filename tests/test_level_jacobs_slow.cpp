@@ -62,7 +62,9 @@ TEST(LevelJacobs, PartialScansWarnAndNeverTiltWrong) {
     for (const auto& w : r.warnings)
       horizon_warning |= w.find("of the horizon") != std::string::npos;
     EXPECT_TRUE(horizon_warning);
-    if (r.levelled) EXPECT_LE(angle_deg(r.up_input, full.up_input), 0.3);
+    if (r.levelled) {
+      EXPECT_LE(angle_deg(r.up_input, full.up_input), 0.3);
+    }
     std::printf("scans %zu-%zu: levelled %d tilt %.2f (full %.2f), surround %.2f, horizon %.2f\n",
                 a, b, r.levelled, r.tilt_deg, full.tilt_deg, r.support.plane_surround_share,
                 r.support.horizon_share);
