@@ -13,20 +13,17 @@
 #include "indoormap/cloud_io/load.hpp"
 #include "indoormap/core/polygon.hpp"
 #include "map_yaml.hpp"
+#include "json_support.hpp"
 #include "test_support.hpp"
 
 using namespace indoormap;
 using nlohmann::json;
+using test::read_json;
 using test::run_app;
 
 namespace {
 
 namespace fs = std::filesystem;
-
-json read_json(const fs::path& p) {
-  std::ifstream in(p);
-  return json::parse(in);
-}
 
 // Distance of an angle (degrees) from the nearest axis direction, [0, 45].
 double off_axis_deg(double deg) {

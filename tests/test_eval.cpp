@@ -14,12 +14,14 @@
 #include "indoormap/sim/eval.hpp"
 #include "indoormap/sim/simulate.hpp"
 #include "indoormap/sim/world.hpp"
+#include "json_support.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;
 using namespace indoormap;
 using namespace indoormap::sim;
 using nlohmann::json;
+using test::read_json;
 
 namespace {
 
@@ -60,10 +62,6 @@ fs::path make_truth(const fs::path& dir) {
   formats::write_json(dir / "ground_truth.json",
                       formats::ground_truth_json(n, sim, layout, "scene-sim"));
   return dir / "ground_truth.json";
-}
-
-json read_json(const fs::path& p) {
-  return json::parse(test::read_text(p));
 }
 
 }  // namespace

@@ -11,20 +11,17 @@
 #include "indoormap/cloud_io/load.hpp"
 #include "indoormap/cloud_io/write.hpp"
 #include "map_yaml.hpp"
+#include "json_support.hpp"
 #include "test_support.hpp"
 
 using namespace indoormap;
 using nlohmann::json;
+using test::read_json;
 using test::run_app;
 
 namespace {
 
 namespace fs = std::filesystem;
-
-json read_json(const fs::path& p) {
-  std::ifstream in(p);
-  return json::parse(in);
-}
 
 // The robot's configuration space of map.yaml: free cells whose centre lies at least radius_m
 // from the centre of every cell that is not free (unknown counts as blocked), 4-connected

@@ -165,7 +165,8 @@ nlohmann::ordered_json summary_json(const Args& a, const scene_sim::Config& conf
       {"range_max_m", config.scanner.range_max_m},
       {"range_sigma_m", config.scanner.range_sigma_m},
       {"mixed_pixel_probability", config.scanner.mixed_pixel_probability},
-      {"mixed_pixel_min_jump_m", config.scanner.mixed_pixel_min_jump_m}};
+      {"mixed_pixel_min_jump_m", config.scanner.mixed_pixel_min_jump_m},
+      {"coordinate_step_m", config.scanner.coordinate_step_m}};
   summary["parameters"]["output"] = {{"truth_cell_m", config.output.truth_cell_m},
                                      {"3dtk", config.output.write_3dtk},
                                      {"sector_deg", config.sector_deg}};

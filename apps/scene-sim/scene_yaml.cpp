@@ -70,6 +70,7 @@ void visit_scanner(sim::ScannerParams& s, F&& f) {
   f("scanner", "range_sigma_m", app::finite(s.range_sigma_m));
   f("scanner", "mixed_pixel_probability", app::finite(s.mixed_pixel_probability));
   f("scanner", "mixed_pixel_min_jump_m", app::finite(s.mixed_pixel_min_jump_m));
+  f("scanner", "coordinate_step_m", app::finite(s.coordinate_step_m));
 }
 
 /// Every key of the config file (-c, config/scene-sim.yaml), in documentation order.

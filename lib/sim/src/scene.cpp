@@ -298,6 +298,8 @@ std::vector<SceneProblem> check_scene(const Scene& scene) {
   if (!(s.mixed_pixel_probability >= 0 && s.mixed_pixel_probability <= 1))
     bad("scanner.mixed_pixel_probability", "must be in [0, 1]");
   if (!(s.mixed_pixel_min_jump_m > 0)) bad("scanner.mixed_pixel_min_jump_m", "must be above 0");
+  if (!(s.coordinate_step_m >= 0 && s.coordinate_step_m <= 0.1))
+    bad("scanner.coordinate_step_m", "must be in [0, 0.1] m (0: float precision)");
   if (!(std::abs(scene.tilt.roll_deg) <= 30 && std::abs(scene.tilt.pitch_deg) <= 30))
     bad("tilt", "roll_deg and pitch_deg must be within +-30 degrees");
   return out;

@@ -177,7 +177,10 @@ SimResult simulate_pattern(const Scene& scene, const SimOptions& options, std::u
         }
         if (sp.range_sigma_m > 0) range += sp.range_sigma_m * rng.normal();
         if (range < sp.range_min_m || range > sp.range_max_m) continue;
-        out.points.emplace_back((origin_tilted + range * d_tilted).cast<float>());
+        Eigen::Vector3d p = origin_tilted + range * d_tilted;
+        if (sp.coordinate_step_m > 0)
+          p = ((p / sp.coordinate_step_m).array().round() * sp.coordinate_step_m).matrix();
+        out.points.emplace_back(p.cast<float>());
         out.mixed_pixels += mixed;
       }
       std::swap(prev_col, cur_col);

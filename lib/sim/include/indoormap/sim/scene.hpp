@@ -93,6 +93,10 @@ struct ScannerParams {
   /// upper or left neighbour) returns a mixed pixel: a point somewhere between both surfaces.
   double mixed_pixel_probability = 0.3;
   double mixed_pixel_min_jump_m = 0.3;
+  /// Recorded coordinates are rounded to multiples of this step in the output (tilted) frame,
+  /// as a scanner's export does (a LAS file of scale 0.001 holds 1 mm points exactly); 0: the
+  /// full float precision.
+  double coordinate_step_m = 0.0;
 };
 
 struct Tilt {
