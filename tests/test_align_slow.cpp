@@ -12,8 +12,8 @@
 
 #include "indoormap/cloud_io/load.hpp"
 #include "indoormap/core/polygon.hpp"
-#include "map_yaml.hpp"
 #include "json_support.hpp"
+#include "map_yaml.hpp"
 #include "test_support.hpp"
 
 using namespace indoormap;

@@ -229,7 +229,7 @@ TEST(MapEval, HandMadeResultFilesGiveKnownScores) {
   const json& ob = e["objects"];
   EXPECT_EQ(ob["truth_count"], 2);  // cabinet and desk; the lamp hangs from the ceiling
   EXPECT_EQ(ob["matched"], 1);
-  EXPECT_EQ(ob["matched_all"], 1);  // precision's numerator, written for scripts
+  EXPECT_EQ(ob["matched_all"], 1);   // precision's numerator, written for scripts
   EXPECT_EQ(ob["result_count"], 2);  // "hanging" and "lamp" results are compared only with lamps
   EXPECT_DOUBLE_EQ(ob["recall"].get<double>(), 0.5);
   EXPECT_DOUBLE_EQ(ob["precision"].get<double>(), 0.5);

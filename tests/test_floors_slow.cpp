@@ -10,8 +10,8 @@
 
 #include "indoormap/cloud_io/load.hpp"
 #include "indoormap/cloud_io/write.hpp"
-#include "map_yaml.hpp"
 #include "json_support.hpp"
+#include "map_yaml.hpp"
 #include "test_support.hpp"
 
 using namespace indoormap;
