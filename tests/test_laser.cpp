@@ -180,6 +180,30 @@ TEST(LogOdds, HandExample) {
   EXPECT_EQ(m.cell_at({4, 1}), Cell::kFree);
 }
 
+// Unclamped (clamp: false, laser-to-map's default) a cell's class is its evidence over all its
+// observations: hit 8 times, then passed 10 times (a thing that stood there and went away), it sums
+// 8 logit(0.7) + 10 logit(0.4) = 6.78 - 4.05 = 2.72 > logit(0.6): still a wall, as 8 of the 18
+// beams that reached it say. Clamped, the hits stop counting at logit(0.97) = 3.48 and the cell
+// ends free at 3.48 - 4.05 = -0.58: it follows its last observations.
+TEST(LogOdds, UnclampedCellWeighsEveryObservationAlike) {
+  LogOddsParams unclamped;
+  unclamped.clamp = false;
+  LogOddsMapper all(fixed_grid(10, 3), unclamped), recent(fixed_grid(10, 3), {});
+  for (int k = 0; k < 8; ++k)
+    for (auto* m : {&all, &recent}) m->integrate(beam_scan(0.5, 1.5, 0.0, {4.0f}));
+  for (int k = 0; k < 10; ++k)
+    for (auto* m : {&all, &recent}) m->integrate(beam_scan(0.5, 1.5, 0.0, {6.0f}));
+  const float miss = std::log(0.4f / 0.6f), hit = std::log(0.7f / 0.3f);
+  EXPECT_NEAR(all.log_odds({4, 1}), 8 * hit + 10 * miss, 1e-4);
+  EXPECT_EQ(all.cell_at({4, 1}), Cell::kWall);
+  EXPECT_NEAR(all.log_odds({0, 1}), 18 * miss, 1e-4);  // no floor either
+  EXPECT_NEAR(recent.log_odds({4, 1}), std::log(0.97 / 0.03) + 10 * miss, 1e-4);
+  EXPECT_EQ(recent.cell_at({4, 1}), Cell::kFree);
+  // Twelve more passes outweigh the eight hits: 2.72 + 12 logit(0.4) = -2.14, free.
+  for (int k = 0; k < 12; ++k) all.integrate(beam_scan(0.5, 1.5, 0.0, {6.0f}));
+  EXPECT_EQ(all.cell_at({4, 1}), Cell::kFree);
+}
+
 // ------------------------------------------------------------------------------- growing
 TEST(Occupancy, GridGrowsToFitScansAndKeepsValues) {
   OccupancyGridParams p;

@@ -265,13 +265,15 @@ TEST(LaserToMap, PoseRefinementRepairsPoseErrors) {
   EXPECT_GE(share_on, 0.99);   // measured 0.998
 }
 
-// The shared logs with the default method (log-odds); the HIMM figures of the same logs are in
-// test_carmen.cpp (with the log's poses). The issue asks for >= 80 % of beams within 2 cells;
-// freiburg-079 stays below it even with the pose refinement (0.783; docs/laser-to-map.md explains
-// why), so its floor guards the measured figure instead.
+// The shared logs with the app's defaults (pose refinement on), log-odds (the default method) and
+// HIMM (--method himm). The issue asks for >= 80 % of beams within 2 cells; log-odds reaches it on
+// all three since the whole-log map is unclamped (log_odds.clamp: false; measured intel 0.910,
+// csail 0.840, freiburg-079 0.864; clamped 0.904 / 0.832 / 0.783, docs/laser-to-map.md, "Why
+// freiburg-079's beams disagreed"). HIMM keeps the paper's rules (bounded counter, freeze at 15):
+// measured 0.878 / 0.821 / 0.600, below 80 % on freiburg-079, so its floors guard the figures.
 struct RealLog {
   const char* file;
-  double min_within;
+  double min_himm, min_log_odds;
 };
 
 void PrintTo(const RealLog& l, std::ostream* os) {
@@ -283,22 +285,26 @@ class LaserToMapRealLogs : public ::testing::TestWithParam<RealLog> {};
 TEST_P(LaserToMapRealLogs, MapsTheLogAndReportsItsConsistency) {
   INDOORMAP_REQUIRE_DATA(logs, "carmen-logs");
   const RealLog& l = GetParam();
-  const auto out = indoormap::test::scratch_dir() / "out";
-  const auto r = run_app("laser-to-map", "-q " + (logs / l.file).string() + " -o " + out.string());
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const json lm = read_json(out / "laser_map.json");
-  std::printf("[ figures  ] %s logodds: %s\n", l.file, lm["consistency"].dump().c_str());
-  EXPECT_GT(lm["scans_mapped"].get<int>(), 400);
-  EXPECT_EQ(lm["scans_skipped"], 0);
-  EXPECT_GE(lm["consistency"]["within_share"].get<double>(), l.min_within) << l.file;
-  EXPECT_EQ(lm["pose_refine"].size(), 2u);  // the default
-  EXPECT_TRUE(fs::exists(out / "map.png"));
+  const auto dir = indoormap::test::scratch_dir();
+  for (const auto& [method, floor] : {std::pair{"logodds", l.min_log_odds}, {"himm", l.min_himm}}) {
+    const auto out = dir / method;
+    const auto r = run_app("laser-to-map", "-q " + (logs / l.file).string() + " --method " +
+                                               method + " -o " + out.string());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const json lm = read_json(out / "laser_map.json");
+    std::printf("[ figures  ] %s %s: %s\n", l.file, method, lm["consistency"].dump().c_str());
+    EXPECT_GT(lm["scans_mapped"].get<int>(), 400);
+    EXPECT_EQ(lm["scans_skipped"], 0);
+    EXPECT_GE(lm["consistency"]["within_share"].get<double>(), floor) << l.file << " " << method;
+    EXPECT_EQ(lm["pose_refine"].size(), 2u);  // the default
+    EXPECT_TRUE(fs::exists(out / "map.png"));
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Shared, LaserToMapRealLogs,
-                         ::testing::Values(RealLog{"intel-corrected.log.gz", 0.89},
-                                           RealLog{"csail-corrected.log.gz", 0.82},
-                                           RealLog{"freiburg-079-corrected.log.gz", 0.77}),
+                         ::testing::Values(RealLog{"intel-corrected.log.gz", 0.87, 0.90},
+                                           RealLog{"csail-corrected.log.gz", 0.81, 0.83},
+                                           RealLog{"freiburg-079-corrected.log.gz", 0.59, 0.86}),
                          [](const ::testing::TestParamInfo<RealLog>& info) {
                            std::string n = info.param.file;
                            n = n.substr(0, n.find('-'));

@@ -17,7 +17,9 @@ struct LaserMapConfig {
   laser::MapperKind method = laser::MapperKind::kLogOdds;  ///< the better one on the real logs
   laser::OccupancyGridParams grid;
   laser::HimmParams himm;
-  laser::LogOddsParams log_odds;
+  /// Unclamped: the map of the whole log weighs every beam alike (a clamped cell follows its last
+  /// few observations; docs/laser-to-map.md, "Why freiburg-079's beams disagreed").
+  laser::LogOddsParams log_odds{.clamp = false};
   laser::PoseRefineParams pose_refine;
   laser::ConsistencyParams consistency;
   formats::CarmenReadOptions log;
@@ -46,6 +48,7 @@ void visit_laser_map(C& c, F&& f) {
   f("himm", "mask", c.himm.mask);
   f("log_odds", "p_hit", c.log_odds.p_hit);
   f("log_odds", "p_miss", c.log_odds.p_miss);
+  f("log_odds", "clamp", c.log_odds.clamp);
   f("log_odds", "p_min", c.log_odds.p_min);
   f("log_odds", "p_max", c.log_odds.p_max);
   f("log_odds", "occupied_above_p", c.log_odds.occupied_above_p);

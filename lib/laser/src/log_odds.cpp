@@ -68,7 +68,9 @@ void LogOddsMapper::integrate(const LaserScan& scan) {
     if (auto g = detail::grown_geometry(geometry_, log_odds_.size() == 0, ends, grid_params_))
       grow_to(*g);
   float* d = log_odds_.data.data();
-  const float lo = l_min_, hi = l_max_, miss = l_miss_, hit = l_hit_;
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  const float lo = p_.clamp ? l_min_ : -kInf, hi = p_.clamp ? l_max_ : kInf;
+  const float miss = l_miss_, hit = l_hit_;
   detail::walk_beams(
       ends, geometry_, grid_params_.hit_guard_cells,
       [&](std::size_t i) {

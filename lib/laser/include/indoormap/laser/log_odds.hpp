@@ -1,7 +1,12 @@
 #pragma once
 // Log-odds Bayesian occupancy with a beam model: along each beam the cells before the end get the
-// log-odds of p_miss, the end cell (a hit) the log-odds of p_hit; values are clamped to the
-// log-odds of [p_min, p_max] so the map can still change its mind. Unknown cells hold 0 (p = 0.5).
+// log-odds of p_miss, the end cell (a hit) the log-odds of p_hit. Unknown cells hold 0 (p = 0.5).
+//
+// With `clamp` (the default, for a robot mapping as it goes) the sum is bounded to the log-odds of
+// [p_min, p_max], so that the map can still change its mind: a cell then follows its last few
+// observations. Without it the sum is each cell's evidence over all its observations alike, the
+// maximum-likelihood map of a whole log (what laser-to-map builds: docs/laser-to-map.md,
+// "Why freiburg-079's beams disagreed").
 #include "indoormap/laser/occupancy.hpp"
 
 namespace indoormap::laser {
@@ -9,10 +14,11 @@ namespace indoormap::laser {
 struct LogOddsParams {
   double p_hit = 0.7;             ///< P(occupied | the beam ended here)
   double p_miss = 0.4;            ///< P(occupied | the beam passed)
-  double p_min = 0.12;            ///< clamp
-  double p_max = 0.97;            ///< clamp
+  double p_min = 0.12;            ///< clamp (when `clamp`)
+  double p_max = 0.97;            ///< clamp (when `clamp`)
   double occupied_above_p = 0.6;  ///< p > this: kWall
   double free_below_p = 0.45;     ///< observed and p < this: kFree
+  bool clamp = true;              ///< bound the sum to [p_min, p_max] (recent observations win)
   void validate() const;
 };
 
