@@ -45,7 +45,10 @@ Args parse_args(int argc, char** argv) {
   CLI::App cli{
       "laser-to-map: build an occupancy map from a CARMEN laser log with known poses (HIMM or "
       "log-odds)\nand check it against its own scans. Writes map.pgm + map.yaml (ROS map_server), "
-      "map.png,\nlaser_map.json and summary.json in the output directory.\n"};
+      "map.png,\nlaser_map.json and summary.json in the output directory.\n"
+      "By default each scan's pose is first refined against the map of the log (pose_refine.passes "
+      "2;\nset it to 0 for the log's poses as given), and the log-odds sum is not clamped (every "
+      "beam of\nthe log weighs alike: log_odds.clamp). docs/laser-to-map.md.\n"};
   cli.footer(
       "Examples:\n"
       "  laser-to-map ../shared/data/carmen-logs/intel-corrected.log.gz -o out/intel\n"
