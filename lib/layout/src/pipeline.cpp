@@ -138,12 +138,17 @@ void map_voxelized(PointCloud cloud, const MapParams& params, MapResult& r) {
 
   std::vector<Eigen::Vector2d> seeds;
   for (const auto& s : cloud.scanners) seeds.emplace_back(s.x(), s.y());
-  r.layout = build_layout(r.walls, r.furniture, r.geometry, seeds, params.layout, &support);
-  for (const auto& w : r.layout.warnings) r.warnings.push_back(w);
-  r.timings.push_back({"layout", sw.lap_ms()});
+  // The navigation map first: its free cells (observed floor, rays) are the layout's evidence.
   r.nav = build_nav_map(r.voxels, r.layers.floor_z_m, cloud.scanners, params.nav);
   for (const auto& w : r.nav.warnings) r.warnings.push_back(w);
   r.timings.push_back({"nav_map", sw.lap_ms()});
+  Grid<std::uint8_t> evidence(r.nav.map.width, r.nav.map.height, 0);
+  for (std::size_t i = 0; i < evidence.size(); ++i)
+    evidence.data[i] = r.nav.map.data[i] == Cell::kFree;
+  r.layout =
+      build_layout(r.walls, r.furniture, r.geometry, seeds, params.layout, &support, &evidence);
+  for (const auto& w : r.layout.warnings) r.warnings.push_back(w);
+  r.timings.push_back({"layout", sw.lap_ms()});
   r.cloud_map = std::move(cloud);
 }
 
