@@ -90,6 +90,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("layout", "hanging_max_extent_m", lo.hanging_max_extent_m);
   f("layout", "hanging_gap_m", lo.hanging_gap_m);
   f("layout", "free_needs_evidence", lo.free_needs_evidence);
+  f("layout", "sparse_floor_fill", lo.sparse_floor_fill);
   f("layout", "passage_bridge_m", lo.passage_bridge_m);
   auto& ob = c.objects;
   f("objects", "min_area_m2", ob.min_area_m2);

@@ -159,6 +159,8 @@ void validate(const LayoutParams& lo) {
           "layout.passage_min_lines: must be in [0, 4] (0: the paper's row and column passes)");
   require(lo.passage_bridge_m >= 0 && lo.passage_bridge_m <= 2,
           "layout.passage_bridge_m: must be in [0, 2]");
+  require(lo.sparse_floor_fill >= 0 && lo.sparse_floor_fill <= 1.01,
+          "layout.sparse_floor_fill: must be in [0, 1.01]");
   require(lo.seed_search_radius_m >= 0, "layout.seed_search_radius_m: must be >= 0");
   require(lo.hanging_max_area_m2 >= 0, "layout.hanging_max_area_m2: must be >= 0");
   require(lo.hanging_gap_m > 0, "layout.hanging_gap_m: must be > 0");
