@@ -60,7 +60,8 @@ void run_ghost_filter(PointCloud& cloud, const cloud::GhostParams& params, MapRe
 }
 
 // The share of the cells of the floor's 0.2 m blocks (4 x 4 cells of 5 cm) that hold floor
-// points (the floor layer and its neighbours): about 1 on a dense scan, 0.2-0.4 at 1 degree.
+// points (the floor layer and its neighbours): 0.74-0.85 at the default 0.25 degree step,
+// 0.4-0.5 at 1 degree, about 0.2 at 2 degrees.
 double floor_fill(const cloud::VoxelGrid& v, std::int64_t floor_layer) {
   const std::int64_t b = std::max<std::int64_t>(1, std::lround(0.2 / v.cell_m));
   const std::int64_t bw = (v.nx + b - 1) / b, bh = (v.ny + b - 1) / b;
