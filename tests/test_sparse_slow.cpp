@@ -57,7 +57,7 @@ double far_share(const json& e, const char* grid) {
 
 }  // namespace
 
-// The 1 degree figures on all of seeds 21-40 (about 40 s).
+// The 1 degree figures on all of seeds 21-40 (10-25 s on the 2-core machine).
 TEST(Sparse, OneDegreeStepOnTwentyHeldOutScenes) {
   const fs::path dir = indoormap::test::scratch_dir();
   int truth = 0, matched = 0, written = 0, matched_all = 0, border = 0, runs = 0;
