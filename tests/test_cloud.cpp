@@ -258,6 +258,36 @@ TEST(Layers, OverridesWin) {
   EXPECT_EQ(a.wall_band.hi_layer, 4);
 }
 
+// Issue 17, sparse scans: a floor hit in one cell of every 4 x 4 (a 1-2 degree step far from the
+// scanner) under a fully hit ceiling. By occupied cells the floor holds 1/16 of the fullest
+// layer and the "floor" found was the ceiling, with no room above it (no map at all); counted
+// in blocks of surface_block_m (4 cells here) it is as strong as the ceiling.
+TEST(Layers, SparseFloorUnderADenseCeilingIsFoundByBlocks) {
+  VoxelGrid g;
+  g.cell_m = 0.05;
+  g.nx = g.ny = 40;
+  g.nz = 50;  // 2.5 m
+  g.counts.assign(static_cast<std::size_t>(g.nx * g.ny * g.nz), 0);
+  auto set = [&](std::int64_t x, std::int64_t y, std::int64_t z) {
+    g.counts[static_cast<std::size_t>((z * g.ny + y) * g.nx + x)] = 1;
+  };
+  for (int x = 0; x < 40; ++x)
+    for (int y = 0; y < 40; ++y) {
+      if (x % 4 == 1 && y % 4 == 1) set(x, y, 1);  // floor, layer 1
+      set(x, y, 48);                               // ceiling
+      if (x == 0 || y == 0 || x == 39 || y == 39)
+        for (int z = 1; z <= 48; z += 2) set(x, y, z);  // walls
+    }
+  LayerParams p;
+  p.surface_block_m = 0.2;
+  const LayerAnalysis a = analyse_layers(g, p);
+  EXPECT_EQ(a.floor_layer, 1);
+  EXPECT_TRUE(a.ceiling_found);
+  EXPECT_EQ(a.ceiling_layer, 48);
+  p.surface_block_m = 0;  // cells only: the floor is not found
+  EXPECT_NE(analyse_layers(g, p).floor_layer, 1);
+}
+
 TEST(Layers, AllPointsAtOneHeightIsAnInputError) {
   VoxelGrid g;
   g.cell_m = 0.05;

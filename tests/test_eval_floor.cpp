@@ -133,6 +133,25 @@ TEST(FloorEval, SeenIouIgnoresUnseenFreeCells) {
   EXPECT_DOUBLE_EQ(*c.iou, 0.5);
 }
 
+// Issue 17, sparse scans: free cells farther than far_m from every seen cell are "far free".
+TEST(FloorEval, FarFreeCountsFreeCellsAwayFromEverySeenCell) {
+  // 12 x 1 cells of 0.25 m; seen 0..3 (centres 0.125 .. 0.875 m); result free 0..11.
+  const GridGeometry g({0, 0}, 0.25, 12, 1);
+  Mask seen(12, 1, 0), result(12, 1, 1);
+  for (int c = 0; c < 4; ++c) seen.at(c, 0) = 1;
+  // Cells 4 and 5 (centres 1.125, 1.375 m) lie within 0.5 m of cell 3 (0.875 m); 6..11 do not.
+  const FarFree f = evaluate_far_free(g, seen, g, result, 0.5);
+  EXPECT_DOUBLE_EQ(f.free_m2, 12 * 0.0625);
+  EXPECT_DOUBLE_EQ(f.far_m2, 6 * 0.0625);
+  EXPECT_DOUBLE_EQ(*f.share, 0.5);
+  // A result cell beyond the truth grid is far too; no free cells: no share.
+  const GridGeometry wide({0, 0}, 0.25, 14, 1);
+  Mask r2(14, 1, 0);
+  r2.at(13, 0) = 1;
+  EXPECT_DOUBLE_EQ(evaluate_far_free(g, seen, wide, r2, 0.5).far_m2, 0.0625);
+  EXPECT_FALSE(evaluate_far_free(g, seen, g, Mask(12, 1, 0), 0.5).share.has_value());
+}
+
 TEST(FloorEval, ObjectRecallCountsItemsOfTheMinimumAreaPrecisionEverything) {
   auto box = [](std::string id, double x, double side) {
     EvalObject o;

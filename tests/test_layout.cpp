@@ -351,3 +351,85 @@ TEST(LayoutParams, ValidatedByBuildLayoutAndMakeMap) {
   mp.layout.hanging_gap_m = 0;
   EXPECT_THROW(make_map(PointCloud{}, mp), UsageError);
 }
+
+namespace {
+
+// A 40 x 30 cell room (cells of 5 cm) whose walls are dotted as a 2 degree scan leaves them: one
+// wall cell in every `period` along each side.
+Grid<std::uint8_t> dotted_room(int period) {
+  Grid<std::uint8_t> g(44, 34, 0);
+  for (int c = 2; c <= 41; ++c)
+    if ((c - 2) % period == 0) g.at(c, 2) = g.at(c, 31) = 1;
+  for (int r = 2; r <= 31; ++r)
+    if ((r - 2) % period == 0) g.at(2, r) = g.at(41, r) = 1;
+  return g;
+}
+
+std::int64_t count_class(const Grid<Cell>& g, Cell c) {
+  return std::count(g.data.begin(), g.data.end(), c);
+}
+
+}  // namespace
+
+// Issue 17, sparse scans: with walls dotted every 4 cells whole rows and diagonals through the gaps
+// hold no wall, and with the 3-of-4-lines rule alone most of the room fell out of the passage
+// area. Bridging gaps up to passage_bridge_m for the test keeps the whole room.
+TEST(PassageArea, DottedWallsOfASparseScanAreBridged) {
+  const auto walls = dotted_room(4);
+  const Grid<std::uint8_t> none(walls.width, walls.height, 0);
+  const GridGeometry geo({0.0, 0.0}, 0.05, walls.width, walls.height);
+  LayoutParams off;
+  off.passage_bridge_m = 0;
+  off.free_needs_evidence = false;
+  LayoutParams on = off;
+  on.passage_bridge_m = 0.25;  // a square of 7 cells: gaps of up to 6 cells bridged
+  const LayoutResult a = build_layout(walls, none, geo, {{1.1, 0.85}}, off);
+  const LayoutResult b = build_layout(walls, none, geo, {{1.1, 0.85}}, on);
+  const std::int64_t interior = 38 * 28;
+  EXPECT_LT(count_class(a.layout, Cell::kFree), interior / 2) << render(a.layout);
+  EXPECT_GE(count_class(b.layout, Cell::kFree), interior - 4 * 38) << render(b.layout);
+  // Nothing outside the dotted ring is free, and no cell became wall by the bridging.
+  for (int r = 0; r < walls.height; ++r)
+    for (int c = 0; c < walls.width; ++c) {
+      if (c < 2 || c > 41 || r < 2 || r > 31) {
+        EXPECT_NE(b.layout.at(c, r), Cell::kFree);
+      }
+      EXPECT_EQ(b.layout.at(c, r) == Cell::kWall, walls.at(c, r) != 0);
+    }
+}
+
+// Issue 17, sparse scans: the flood runs only over cells the scan shows free. A closed room whose
+// left half alone holds evidence (rays, observed floor): the right half stays unknown, no longer
+// free by the paper's flood; a one-cell hole in the evidence does not cut the flood.
+TEST(Layout, FreeSpaceOnlyWhereTheScanShowsIt) {
+  auto walls = parse({
+      "##########",
+      "#........#",
+      "#........#",
+      "#........#",
+      "##########",
+  });
+  const Grid<std::uint8_t> furn(walls.width, walls.height, 0);
+  auto evidence = parse(
+      {
+          "..........",
+          ".EEEE.....",
+          ".E.EE.....",
+          ".EEEE.....",
+          "..........",
+      },
+      'E');
+  const LayoutResult with =
+      build_layout(walls, furn, geo_for(walls), {{1.5, 1.5}}, {}, nullptr, &evidence);
+  EXPECT_EQ(render(with.layout),
+            "WWWWWWWWWW\n"
+            "W....    W\n"
+            "W....    W\n"
+            "W....    W\n"
+            "WWWWWWWWWW\n");
+  LayoutParams paper;
+  paper.free_needs_evidence = false;
+  const LayoutResult without =
+      build_layout(walls, furn, geo_for(walls), {{1.5, 1.5}}, paper, nullptr, &evidence);
+  EXPECT_EQ(without.cells_free, 24);
+}

@@ -68,6 +68,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("layers", "ceiling_min_fraction", ly.ceiling_min_fraction);
   f("layers", "min_room_height_m", ly.min_room_height_m);
   f("layers", "ceiling_onset_factor", ly.ceiling_onset_factor);
+  f("layers", "surface_block_m", ly.surface_block_m);
   f("layers", "floor_clearance_m", ly.floor_clearance_m);
   f("layers", "ceiling_clearance_m", ly.ceiling_clearance_m);
   f("layers", "wall_band_m", ly.wall_band_m);
@@ -88,6 +89,9 @@ void visit(PipelineConfig& c, F&& f) {
   f("layout", "hanging_max_area_m2", lo.hanging_max_area_m2);
   f("layout", "hanging_max_extent_m", lo.hanging_max_extent_m);
   f("layout", "hanging_gap_m", lo.hanging_gap_m);
+  f("layout", "free_needs_evidence", lo.free_needs_evidence);
+  f("layout", "sparse_floor_fill", lo.sparse_floor_fill);
+  f("layout", "passage_bridge_m", lo.passage_bridge_m);
   auto& ob = c.objects;
   f("objects", "min_area_m2", ob.min_area_m2);
   f("objects", "join_gap_m", ob.join_gap_m);

@@ -321,6 +321,7 @@ json summary_json(const std::string& program, const PipelineRun& run, const Pipe
         {"size_cells", {m.voxels.nx, m.voxels.ny, m.voxels.nz}},
         {"bounds_m", {{"lo", vec(m.bounds.lo_m)}, {"hi", vec(m.bounds.hi_m)}}}}},
       {"floor_z_m", m.layers.floor_z_m},
+      {"floor_fill", m.floor_fill},
       {"ceiling_z_m", m.layers.ceiling_z_m},
       {"ceiling_found", m.layers.ceiling_found},
       {"ceiling_sloped", m.layers.ceiling_sloped},

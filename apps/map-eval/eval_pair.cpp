@@ -171,6 +171,15 @@ ordered_json floor_json(const formats::TruthFile& truth, const Grid<Cell>& truth
              : null_note(no_seen);
     k["free_iou_all"] =
         seen_json(sim::evaluate_seen_free(tg, truth_free, truth_free, r.geometry, free));
+    if (seen) {
+      const sim::FarFree ff = sim::evaluate_far_free(tg, *seen, r.geometry, free, p.far_free_m);
+      k["far_free"] = {{"far_m", p.far_free_m},
+                       {"far_m2", ff.far_m2},
+                       {"free_m2", ff.free_m2},
+                       {"share", opt(ff.share)}};
+    } else {
+      k["far_free"] = null_note(no_seen);
+    }
     k["wall_faces"] = faces_json(sim::evaluate_wall_faces(tg, truth_cells, r.geometry,
                                                           sim::class_mask(r.cells, Cell::kWall)));
     j[name] = k;

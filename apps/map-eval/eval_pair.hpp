@@ -15,6 +15,7 @@ namespace indoormap::map_eval {
 struct PairParams {
   sim::EvalParams eval;
   double robot_width_m = 0.4;
+  double far_free_m = 0.5;  ///< "far free": result free cells farther than this from any seen cell
 };
 
 struct PairReport {

@@ -71,6 +71,8 @@ void validate(const LayerParams& ly) {
   require(ly.wall_min_extent_m >= 0 && ly.wall_min_extent_m <= ly.wall_band_m,
           "layers.wall_min_extent_m: must be in [0, layers.wall_band_m]");
   require(ly.furniture_max_height_m > 0, "layers.furniture_max_height_m: must be > 0");
+  require(ly.surface_block_m >= 0 && ly.surface_block_m <= 2,
+          "layers.surface_block_m: must be in [0, 2]");
   require(ly.ceiling_onset_factor > 1, "layers.ceiling_onset_factor: must be > 1");
   require(ly.min_room_height_m >= 0, "layers.min_room_height_m: must be >= 0");
   require(ly.floor_clearance_m >= 0 && ly.ceiling_clearance_m >= 0,
@@ -215,6 +217,22 @@ std::optional<std::int64_t> ceiling_onset(const std::vector<std::int64_t>& h,
   return std::nullopt;
 }
 
+// Occupied blocks of b x b cells per layer (b = 1: occupied cells).
+std::vector<std::int64_t> blocks_per_layer(const VoxelGrid& g, std::uint16_t min_pts, int b) {
+  std::vector<std::int64_t> out(static_cast<std::size_t>(g.nz), 0);
+  const std::int64_t bw = (g.nx + b - 1) / b, bh = (g.ny + b - 1) / b;
+  std::vector<std::uint8_t> hit(static_cast<std::size_t>(bw * bh));
+  for (std::int64_t z = 0; z < g.nz; ++z) {
+    const std::uint16_t* layer = g.counts.data() + z * g.layer_size();
+    std::fill(hit.begin(), hit.end(), 0);
+    for (std::int64_t y = 0; y < g.ny; ++y)
+      for (std::int64_t x = 0; x < g.nx; ++x)
+        if (layer[y * g.nx + x] >= min_pts) hit[static_cast<std::size_t>((y / b) * bw + x / b)] = 1;
+    out[static_cast<std::size_t>(z)] = std::count(hit.begin(), hit.end(), 1);
+  }
+  return out;
+}
+
 }  // namespace
 
 LayerAnalysis analyse_layers(const VoxelGrid& g, const LayerParams& p) {
@@ -243,33 +261,49 @@ LayerAnalysis analyse_layers(const VoxelGrid& g, const LayerParams& p) {
                              fmt_m((std::max<std::int64_t>(last - first, 0) + 1) * g.cell_m) +
                              "): no floor, furniture and walls to tell apart");
 
-  // Floor: the first strong layer from below, then up to its local peak.
+  // Floor: the first strong layer from below, then up to its local peak. Strength is the layer's
+  // occupied cells; when that leaves no room for a ceiling above the floor (a sparse scan: the
+  // far floor's cells mostly empty, the nearer ceiling's full), its occupied blocks of
+  // surface_block_m, for the floor and the ceiling alike.
+  std::vector<std::int64_t> strength = h;
+  auto floor_from = [&](const std::vector<std::int64_t>& st) {
+    const std::int64_t max_st = *std::max_element(st.begin(), st.end());
+    std::int64_t z = first;
+    while (z < last && static_cast<double>(st[z]) < p.floor_min_fraction * max_st) ++z;
+    while (z < last && h[z + 1] > h[z]) ++z;
+    return z;
+  };
+  const std::int64_t room_layers =
+      static_cast<std::int64_t>(std::ceil(g.to_cells(p.min_room_height_m)));
   if (p.floor_z_m) {
     a.floor_z_m = *p.floor_z_m;
     a.floor_layer = std::clamp<std::int64_t>(g.layer_of(a.floor_z_m), 0, g.nz - 1);
   } else {
-    std::int64_t z = first;
-    while (z < last && static_cast<double>(h[z]) < p.floor_min_fraction * max_count) ++z;
-    while (z < last && h[z + 1] > h[z]) ++z;
-    a.floor_layer = z;
-    a.floor_z_m = g.layer_center_m(z);
+    a.floor_layer = floor_from(h);
+    const int block = static_cast<int>(std::lround(g.to_cells(p.surface_block_m)));
+    if (a.floor_layer + room_layers > last && block > 1) {
+      strength = blocks_per_layer(g, min_pts, block);
+      a.floor_layer = floor_from(strength);
+    }
+    a.floor_z_m = g.layer_center_m(a.floor_layer);
   }
+  const std::int64_t max_strength = *std::max_element(strength.begin(), strength.end());
 
   // Ceiling: the first strong layer from above, then down to its local peak; it must lie at
   // least min_room_height above the floor.
-  const std::int64_t min_ceiling_layer =
-      a.floor_layer + static_cast<std::int64_t>(std::ceil(g.to_cells(p.min_room_height_m)));
+  const std::int64_t min_ceiling_layer = a.floor_layer + room_layers;
   if (p.ceiling_z_m) {
     a.ceiling_found = true;
     a.ceiling_z_m = *p.ceiling_z_m;
     a.ceiling_layer = std::clamp<std::int64_t>(g.layer_of(a.ceiling_z_m), 0, g.nz - 1);
   } else {
     std::int64_t z = last;
-    while (z > min_ceiling_layer && static_cast<double>(h[z]) < p.ceiling_min_fraction * max_count)
+    while (z > min_ceiling_layer &&
+           static_cast<double>(strength[z]) < p.ceiling_min_fraction * max_strength)
       --z;
     while (z > min_ceiling_layer && h[z - 1] > h[z]) --z;
     if (z >= min_ceiling_layer && z <= last &&
-        static_cast<double>(h[z]) >= p.ceiling_min_fraction * max_count) {
+        static_cast<double>(strength[z]) >= p.ceiling_min_fraction * max_strength) {
       a.ceiling_found = true;
       a.ceiling_layer = z;
       a.ceiling_z_m = g.layer_center_m(z);

@@ -42,6 +42,13 @@ std::optional<CellIndex> nearest_set(const Grid<std::uint8_t>& mask, CellIndex s
   return std::nullopt;
 }
 
+std::string fmt_len(double m) {
+  std::ostringstream s;
+  s.precision(2);
+  s << std::fixed << m << " m";
+  return s.str();
+}
+
 std::string fmt_xy(const Eigen::Vector2d& p) {
   std::ostringstream s;
   s.precision(2);
@@ -150,6 +157,10 @@ void validate(const LayoutParams& lo) {
   require(lo.enclosed_max_area_m2 >= 0, "layout.enclosed_max_area_m2: must be >= 0");
   require(lo.passage_min_lines >= 0 && lo.passage_min_lines <= 4,
           "layout.passage_min_lines: must be in [0, 4] (0: the paper's row and column passes)");
+  require(lo.passage_bridge_m >= 0 && lo.passage_bridge_m <= 2,
+          "layout.passage_bridge_m: must be in [0, 2]");
+  require(lo.sparse_floor_fill >= 0 && lo.sparse_floor_fill <= 1.01,
+          "layout.sparse_floor_fill: must be in [0, 1.01]");
   require(lo.seed_search_radius_m >= 0, "layout.seed_search_radius_m: must be >= 0");
   require(lo.hanging_max_area_m2 >= 0, "layout.hanging_max_area_m2: must be >= 0");
   require(lo.hanging_gap_m > 0, "layout.hanging_gap_m: must be > 0");
@@ -157,6 +168,20 @@ void validate(const LayoutParams& lo) {
 }
 
 namespace {
+
+// The obstacles with their gaps up to passage_bridge_m closed (for the passage test only).
+Grid<std::uint8_t> bridged(Grid<std::uint8_t> obstacles, double cell_m, const LayoutParams& p) {
+  const int k = 2 * static_cast<int>(std::lround(p.passage_bridge_m / cell_m / 2)) + 1;
+  if (k < 3 || obstacles.width == 0 || obstacles.height == 0) return obstacles;
+  const cv::Mat square = cv::getStructuringElement(cv::MORPH_RECT, {k, k});
+  // Closed on a copy padded with k empty cells: nothing grows into the edge of the grid (which
+  // usually runs along the outer wall faces), nothing is eroded from outside.
+  cv::Mat padded;
+  cv::copyMakeBorder(as_mat(obstacles), padded, k, k, k, k, cv::BORDER_CONSTANT, cv::Scalar(0));
+  cv::morphologyEx(padded, padded, cv::MORPH_CLOSE, square);
+  padded(cv::Rect(k, k, obstacles.width, obstacles.height)).copyTo(as_mat(obstacles));
+  return obstacles;
+}
 
 // The flood-fill seeds: the scanner positions, moved to the nearest passable cell when they fall on
 // an object.
@@ -278,7 +303,8 @@ void classify(const Grid<std::uint8_t>& walls, const Grid<std::uint8_t>& furn,
 
 LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::uint8_t>& furniture,
                           const GridGeometry& geo, const std::vector<Eigen::Vector2d>& scanners_map,
-                          const LayoutParams& params, const Grid<std::uint8_t>* support) {
+                          const LayoutParams& params, const Grid<std::uint8_t>* support,
+                          const Grid<std::uint8_t>* evidence) {
   if (walls_in.width != furniture.width || walls_in.height != furniture.height ||
       walls_in.width != geo.width() || walls_in.height != geo.height())
     throw Error("build_layout: wall map, furniture map and geometry differ in size");
@@ -302,7 +328,24 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
   // gap in it (a window or a glass transom high up in a wall, as in the Jacobs lab) then opens
   // every row or column through the gap, and the whole strip falls outside the room. The lower
   // part of the same wall closes the gap in the furniture band.
-  r.passage = passage_area(obstacles_of(walls, furniture), params.passage_min_lines);
+  // A scanner stands inside its room: when none lies in the passage area, the walls are too
+  // sparse to bracket it (dotted walls of a sparse scan) and the test runs on bridged obstacles.
+  // Only then: bridging a dense scan's obstacles also brackets the corridor seen through a door.
+  const Grid<std::uint8_t> obstacles = obstacles_of(walls, furniture);
+  r.passage = passage_area(obstacles, params.passage_min_lines);
+  bool in_map = false, inside = false;
+  for (const auto& s : scanners_map) {
+    const CellIndex c = geo.cell_of(s);
+    in_map = in_map || geo.contains(c);
+    inside = inside || (geo.contains(c) && r.passage.at(c) != 0);
+  }
+  if (in_map && !inside && params.passage_bridge_m >= 1.5 * geo.cell_m()) {  // >= 3 cells
+    r.passage = passage_area(bridged(obstacles, geo.cell_m(), params), params.passage_min_lines);
+    r.passage_bridged = true;
+    r.warnings.push_back(
+        "no scanner inside the walls found: the walls are sparse (a coarse scan?); gaps up to " +
+        fmt_len(params.passage_bridge_m) + " bridged to close the room");
+  }
 
   // The flood is stopped by the furniture map closed with a 3x3 square: a scanner sees the front
   // of a cabinet as a speckled face, and a 4-connected flood would leak through its gaps into the
@@ -316,9 +359,18 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
   Grid<std::uint8_t> passable(w, h, 0);
   for (std::size_t i = 0; i < passable.size(); ++i)
     passable.data[i] = r.passage.data[i] && !walls.data[i] && !barrier.data[i];
+  if (evidence && (evidence->width != w || evidence->height != h))
+    throw Error("build_layout: evidence map differs in size");
+  Grid<std::uint8_t> floodable = passable;
+  if (evidence && params.free_needs_evidence) {
+    Grid<std::uint8_t> seen = *evidence;
+    const cv::Mat square = cv::getStructuringElement(cv::MORPH_RECT, {3, 3});
+    cv::morphologyEx(as_mat(seen), as_mat(seen), cv::MORPH_CLOSE, square);
+    for (std::size_t i = 0; i < floodable.size(); ++i) floodable.data[i] &= seen.data[i] != 0;
+  }
 
-  place_seeds(passable, geo, scanners_map, params, r);
-  const Grid<std::uint8_t> free_mask = flood_free(passable, r.seeds);
+  place_seeds(floodable, geo, scanners_map, params, r);
+  const Grid<std::uint8_t> free_mask = flood_free(floodable, r.seeds);
 
   // Furniture: furniture-band obstacles inside the passage area, plus small unreachable pockets
   // that touch them (behind and between objects).

@@ -1,5 +1,6 @@
 #include "indoormap/layout/pipeline.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <span>
@@ -56,6 +57,28 @@ void run_ghost_filter(PointCloud& cloud, const cloud::GhostParams& params, MapRe
   }
   r.warnings.push_back("ghost filter skipped: " + std::to_string(cloud.scanners.size()) +
                        " scanner positions and the origin of some points unknown");
+}
+
+// The share of the cells of the floor's 0.2 m blocks (4 x 4 cells of 5 cm) that hold floor
+// points (the floor layer and its neighbours): 0.74-0.85 at the default 0.25 degree step,
+// 0.4-0.5 at 1 degree, about 0.2 at 2 degrees.
+double floor_fill(const cloud::VoxelGrid& v, std::int64_t floor_layer) {
+  const std::int64_t b = std::max<std::int64_t>(1, std::lround(0.2 / v.cell_m));
+  const std::int64_t bw = (v.nx + b - 1) / b, bh = (v.ny + b - 1) / b;
+  std::vector<std::uint8_t> block(static_cast<std::size_t>(bw * bh), 0);
+  std::int64_t cells = 0;
+  for (std::int64_t y = 0; y < v.ny; ++y)
+    for (std::int64_t x = 0; x < v.nx; ++x) {
+      bool hit = false;
+      for (std::int64_t z = std::max<std::int64_t>(0, floor_layer - 1);
+           z <= std::min(v.nz - 1, floor_layer + 1) && !hit; ++z)
+        hit = v.counts[static_cast<std::size_t>((z * v.ny + y) * v.nx + x)] > 0;
+      if (!hit) continue;
+      ++cells;
+      block[static_cast<std::size_t>((y / b) * bw + x / b)] = 1;
+    }
+  const auto blocks = std::count(block.begin(), block.end(), 1);
+  return blocks ? static_cast<double>(cells) / static_cast<double>(blocks * b * b) : 1.0;
 }
 
 }  // namespace
@@ -138,12 +161,21 @@ void map_voxelized(PointCloud cloud, const MapParams& params, MapResult& r) {
 
   std::vector<Eigen::Vector2d> seeds;
   for (const auto& s : cloud.scanners) seeds.emplace_back(s.x(), s.y());
-  r.layout = build_layout(r.walls, r.furniture, r.geometry, seeds, params.layout, &support);
-  for (const auto& w : r.layout.warnings) r.warnings.push_back(w);
-  r.timings.push_back({"layout", sw.lap_ms()});
+  // The navigation map first: its free cells (observed floor, rays) are the layout's evidence.
   r.nav = build_nav_map(r.voxels, r.layers.floor_z_m, cloud.scanners, params.nav);
   for (const auto& w : r.nav.warnings) r.warnings.push_back(w);
   r.timings.push_back({"nav_map", sw.lap_ms()});
+  // Only for a sparse scan (LayoutParams::sparse_floor_fill): on a dense one the rule cost
+  // object precision (seeds 21-40: 0.82 to 0.77) for nothing.
+  r.floor_fill = floor_fill(r.voxels, r.layers.floor_layer);
+  Grid<std::uint8_t> evidence(r.nav.map.width, r.nav.map.height, 0);
+  for (std::size_t i = 0; i < evidence.size(); ++i)
+    evidence.data[i] = r.nav.map.data[i] == Cell::kFree;
+  const bool sparse = r.floor_fill < params.layout.sparse_floor_fill;
+  r.layout = build_layout(r.walls, r.furniture, r.geometry, seeds, params.layout, &support,
+                          sparse ? &evidence : nullptr);
+  for (const auto& w : r.layout.warnings) r.warnings.push_back(w);
+  r.timings.push_back({"layout", sw.lap_ms()});
   r.cloud_map = std::move(cloud);
 }
 

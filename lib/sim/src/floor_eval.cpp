@@ -50,6 +50,40 @@ SeenIou evaluate_seen_free(const GridGeometry& tg, const Mask& truth_free, const
   return s;
 }
 
+FarFree evaluate_far_free(const GridGeometry& tg, const Mask& seen, const GridGeometry& rg,
+                          const Mask& result_free, double far_m) {
+  // Offsets of the truth cells whose centres may lie within far_m of a point in a cell, nearest
+  // first, so that a cell beside a seen one stops at once.
+  const int k = static_cast<int>(std::ceil(far_m / tg.cell_m())) + 1;
+  std::vector<std::pair<int, int>> disc;
+  for (int dr = -k; dr <= k; ++dr)
+    for (int dc = -k; dc <= k; ++dc) disc.emplace_back(dc, dr);
+  std::sort(disc.begin(), disc.end(), [](const auto& a, const auto& b) {
+    return a.first * a.first + a.second * a.second < b.first * b.first + b.second * b.second;
+  });
+  FarFree f;
+  const double ar = rg.cell_m() * rg.cell_m(), far2 = far_m * far_m;
+  for (int r = 0; r < rg.height(); ++r)
+    for (int c = 0; c < rg.width(); ++c) {
+      if (!result_free.at(c, r)) continue;
+      f.free_m2 += ar;
+      const Eigen::Vector2d p = rg.center_of({c, r});
+      const CellIndex t = tg.cell_of(p);
+      bool near_seen = false;
+      for (const auto& [dc, dr] : disc) {
+        const int x = t.col + dc, y = t.row + dr;
+        if (!seen.contains(x, y) || !seen.at(x, y)) continue;
+        if ((tg.center_of({x, y}) - p).squaredNorm() <= far2) {
+          near_seen = true;
+          break;
+        }
+      }
+      if (!near_seen) f.far_m2 += ar;
+    }
+  f.share = ratio(f.far_m2, f.free_m2);
+  return f;
+}
+
 FaceScores evaluate_wall_faces(const GridGeometry& tg, const Grid<Cell>& truth,
                                const GridGeometry& rg, const Mask& result_wall) {
   Mask face(truth.width, truth.height, 0);

@@ -55,6 +55,11 @@ struct LayerParams {
   double floor_min_fraction = 0.3;     ///< floor: first layer from below with this share of the max
   double ceiling_min_fraction = 0.25;  ///< ceiling: first layer from above with this share of max
   double min_room_height_m = 1.8;      ///< the ceiling lies at least this far above the floor
+  /// When the floor test on occupied cells leaves no room for a ceiling above the floor, the
+  /// floor and ceiling tests count a layer's occupied blocks of this size instead: a sparse scan
+  /// (1-2 degree steps) hits one far floor cell in several, while a block of 0.2 m still holds a
+  /// point, so the floor stays as strong as the nearer ceiling. 0 (or one cell): cells only.
+  double surface_block_m = 0.2;
   /// No strong ceiling layer (a sloped ceiling spreads over many layers): the ceiling starts at the
   /// first layer above min_room_height whose count exceeds this factor times the walls' baseline.
   double ceiling_onset_factor = 1.5;

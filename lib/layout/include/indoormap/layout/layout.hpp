@@ -26,6 +26,12 @@ struct LayoutParams {
   /// gap in a wall (a doorway, the shadow of a pillar) drops every row through it from the room;
   /// 3 of 4 keeps them, while an L-shaped room's notch (bracketed along one line) stays outside.
   int passage_min_lines = 3;
+  /// When no scanner position lies in the passage area, the test runs again over the obstacles
+  /// closed with a square this wide (metres; the nearest odd number of cells): a sparse scan (2
+  /// degree steps) leaves walls as dotted lines, whole rows and diagonals through the gaps hold
+  /// no obstacle, and the room fell out of the passage area. Gaps narrower than this are bridged
+  /// for the test only (no cell becomes wall or furniture); doors are wider. 0: off.
+  double passage_bridge_m = 0.25;
   double seed_search_radius_m = 1.0;  ///< an occupied scanner cell moves to the nearest free one
   /// Wall-band objects that do not continue downwards are hanging (ceiling lamps, ducts): the
   /// wall cells with no support cell (see build_layout) within one cell form components; one
@@ -36,6 +42,18 @@ struct LayoutParams {
   double hanging_max_area_m2 = 2.0;
   double hanging_max_extent_m = 1.5;  ///< longer components are walls seen above an occlusion
   double hanging_gap_m = 0.3;         ///< thickness of the support slice below the wall band
+  /// Free space needs evidence (issue 17, sparse scans): the flood runs only over cells where
+  /// the scan shows free space (build_layout's `evidence`: the navigation map's free cells, whose
+  /// floor was observed or which a ray from a scanner crossed), closed once with a 3x3 square so
+  /// that one-cell holes do not cut it. Unseen passage cells are pockets (furniture when small
+  /// and next to furniture: the body behind a shelf's face; else unknown). false: the paper's
+  /// flood over every passage cell, which on a sparse scan bridges gaps into unseen space.
+  bool free_needs_evidence = true;
+  /// make_map applies free_needs_evidence only to a sparse scan: one whose floor points fill less
+  /// than this share of the cells of the 0.2 m blocks they touch (MapResult::floor_fill: about
+  /// 0.74-0.85 at the default 0.25 degree step, 0.4-0.5 at 1 degree, 0.2 at 2). On dense scans it
+  /// cost object precision (shadows behind chairs became furniture). 1.01: always; 0: never.
+  double sparse_floor_fill = 0.6;
 };
 
 /// Checks ranges. Throws UsageError naming the key ("invalid parameter layout.<key>: ...").
@@ -61,6 +79,7 @@ struct LayoutResult {
   std::vector<CellIndex> seeds;        ///< flood-fill seeds actually used
   std::vector<HangingObject> hanging;  ///< wall-band objects not counted as wall
   bool seeds_estimated = false;        ///< no scanner position known; seed estimated
+  bool passage_bridged = false;        ///< no scanner in the passage area: gaps were bridged
   std::vector<std::string> warnings;
   std::int64_t cells_wall = 0, cells_furniture = 0, cells_free = 0, cells_unknown = 0;
 };
@@ -70,10 +89,13 @@ struct LayoutResult {
 /// farthest from any obstacle inside the passage area, and the result says so.
 /// support: the obstacle map of the slice hanging_gap_m thick just below the wall band (a wall
 /// or a pillar continues there, a lamp does not); when null, the furniture map stands in for it.
+/// evidence: cells the scan shows free (1; see LayoutParams::free_needs_evidence); when null,
+/// or with free_needs_evidence false, every passage cell may be flooded.
 LayoutResult build_layout(const Grid<std::uint8_t>& walls, const Grid<std::uint8_t>& furniture,
                           const GridGeometry& geometry,
                           const std::vector<Eigen::Vector2d>& scanners_map,
                           const LayoutParams& params = {},
-                          const Grid<std::uint8_t>* support = nullptr);
+                          const Grid<std::uint8_t>* support = nullptr,
+                          const Grid<std::uint8_t>* evidence = nullptr);
 
 }  // namespace indoormap::layout

@@ -42,6 +42,7 @@ struct MapResult {
   Grid<std::uint8_t> furniture;  ///< M_f: occupancy of the furniture band
   LayoutResult layout;           ///< M_r and the passage area
   NavResult nav;                 ///< the robot's map (map.pgm): body band, evidence
+  double floor_fill = 1.0;       ///< floor points / cells of their 0.2 m blocks (sparse scans: low)
   std::vector<StageTime> timings;
   std::vector<std::string> warnings;  ///< from every stage, in order
 };

@@ -32,6 +32,20 @@ SeenIou evaluate_seen_free(const GridGeometry& truth_geometry, const Mask& truth
                            const Mask& seen, const GridGeometry& result_geometry,
                            const Mask& result_free);
 
+struct FarFree {
+  double free_m2 = 0.0;  ///< result free area (cells inside the truth grid or not)
+  double far_m2 = 0.0;   ///< of it, cells whose centre is farther than far_m from every seen cell
+  std::optional<double> share;  ///< far / free; empty without free cells
+};
+
+/// Free space far from any observation (issue 17, sparse scans): result free cells whose centre
+/// lies farther than far_m from the centre of every seen truth cell (cells outside the truth grid
+/// count as far when no seen cell is near). A map that calls free only what the rays showed has
+/// none; a streak of "free" bridged between isolated hits into unseen space is counted here.
+FarFree evaluate_far_free(const GridGeometry& truth_geometry, const Mask& seen,
+                          const GridGeometry& result_geometry, const Mask& result_free,
+                          double far_m = 0.5);
+
 struct FaceScores {
   int truth_faces = 0;                   ///< truth wall cells with a 4-neighbour that is truth free
   int result_walls = 0;                  ///< result wall cells
