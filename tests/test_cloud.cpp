@@ -557,8 +557,8 @@ DoorwayScan doorway_scan() {
       }
     s.points.push_back(std::move(pts));
   }
-  // The veil: mixed pixels of the jamb edge X
-  // the rays through them end on the far walls.
+  // The veil: mixed pixels of the jamb edge near the scanners' height, one per voxel, a layer or
+  // two from where the rays through them end on the far walls.
   for (double z = 0.925; z < 1.1; z += 0.05)
     s.veil.push_back((Eigen::Vector3d(2.05, 1.075, z) + shift).cast<float>());
   s.points[0].insert(s.points[0].end(), s.veil.begin(), s.veil.end());
