@@ -33,6 +33,7 @@ inline GhostResult reference_remove_ghost_voxels(VoxelGrid& g,
   const std::size_t stride = std::max<std::size_t>(
       1, (total + params.max_rays - 1) / std::max<std::size_t>(params.max_rays, 1));
   const double skip = g.to_cells(params.end_skip_m);
+  const double far = g.to_cells(params.far_end_m);  // a ray ending this far counts at any layer
   const std::uint16_t* counts = g.counts.data();
   for (const auto& src : sources) {
     if (!src.scanner.allFinite()) continue;
@@ -87,7 +88,9 @@ inline GhostResult reference_remove_ghost_voxels(VoxelGrid& g,
       std::int64_t idx = g.index(v[0], v[1], v[2]);
       double t = t0;
       while (t < t1) {
-        if (counts[idx] && (v[2] <= lo_layer || v[2] >= hi_layer) && passes[idx] != 0xFF)
+        if (counts[idx] && passes[idx] != 0xFF &&
+            (v[2] <= lo_layer || v[2] >= hi_layer ||
+             (far > 0 && (e - Eigen::Vector3d(v[0] + 0.5, v[1] + 0.5, v[2] + 0.5)).norm() >= far)))
           ++passes[idx];
         const int a =
             t_max[0] < t_max[1] ? (t_max[0] < t_max[2] ? 0 : 2) : (t_max[1] < t_max[2] ? 1 : 2);

@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <random>
 
@@ -519,6 +520,159 @@ TEST(Ghosts, MixedPixelsBehindAnEdgeGoTheSurfacesStay) {
   VoxelGrid g2 = before;
   EXPECT_FALSE(remove_ghost_voxels(g2, s.points, s.scanner, off).applied);
   EXPECT_EQ(g2.counts, before.counts);
+}
+
+namespace {
+
+struct Box3 {
+  Eigen::Vector3d lo, hi;
+};
+
+/// Entry parameter of the ray o + t d (t > 0) into box b, or infinity.
+double ray_box(const Eigen::Vector3d& o, const Eigen::Vector3d& d, const Box3& b) {
+  double t0 = 1e-9, t1 = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < 3; ++a) {
+    double ta = (b.lo[a] - o[a]) / d[a], tb = (b.hi[a] - o[a]) / d[a];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+  }
+  return t0 <= t1 ? t0 : std::numeric_limits<double>::infinity();
+}
+
+/// Two 2 x 3 m rooms (walls 0.1 m, ceiling 2.5 m) joined by a 0.9 m doorway under a lintel at
+/// 2.0 m in the wall x in [2.0, 2.1], y in [1.0, 1.9]; a 2 cm post in the right room. Each
+/// trajectory position casts rays on a 0.02 rad grid of azimuth and elevation; the nearest hit
+/// is its point.
+struct DoorwayScan {
+  std::vector<RaySource> sources;
+  std::vector<std::vector<Eigen::Vector3f>> points;
+  std::vector<Eigen::Vector3f> all;
+  std::vector<Eigen::Vector3f> veil;  ///< mixed pixels beside the jamb, one per voxel
+  Box3 post;
+};
+
+constexpr double kDoorwayShift = 0.013;  ///< m, every coordinate of the doorway scene
+
+DoorwayScan doorway_scan() {
+  DoorwayScan s;
+  s.post = {{4.2, 2.6, 0.0}, {4.22, 2.62, 1.18}};
+  std::vector<Box3> boxes = {
+      {{-0.2, -0.2, -0.1}, {4.8, 3.2, 0.0}},  // floor
+      {{-0.2, -0.2, 2.5}, {4.8, 3.2, 2.6}},   // ceiling
+      {{-0.1, -0.1, 0.0}, {0.0, 3.1, 2.5}},   // west wall
+      {{4.5, -0.1, 0.0}, {4.6, 3.1, 2.5}},    // east wall
+      {{-0.1, -0.1, 0.0}, {4.6, 0.0, 2.5}},   // south wall
+      {{-0.1, 3.0, 0.0}, {4.6, 3.1, 2.5}},    // north wall
+      {{2.0, 0.0, 0.0}, {2.1, 1.0, 2.5}},     // the middle wall, left of the door
+      {{2.0, 1.9, 0.0}, {2.1, 3.0, 2.5}},     // ... right of it
+      {{2.0, 1.0, 2.0}, {2.1, 1.9, 2.5}},     // the lintel
+      s.post};
+  std::vector<Eigen::Vector3d> positions = {
+      {0.4, 1.45, 1.0}, {0.8, 0.8, 1.0}, {3.3, 1.45, 1.0}, {3.0, 0.7, 1.0}};
+  // Off the voxel boundaries: a face on one would scatter its points over two voxels.
+  const Eigen::Vector3d shift = Eigen::Vector3d::Constant(kDoorwayShift);
+  for (auto& b : boxes) b = {b.lo + shift, b.hi + shift};
+  for (auto& p : positions) p += shift;
+  s.post = boxes.back();
+  for (const auto& o : positions) {
+    std::vector<Eigen::Vector3f> pts;
+    for (double az = -M_PI; az < M_PI; az += 0.02)
+      for (double el = -1.2; el < 1.2; el += 0.02) {
+        const Eigen::Vector3d d(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az),
+                                std::sin(el));
+        double t = std::numeric_limits<double>::infinity();
+        for (const auto& b : boxes) t = std::min(t, ray_box(o, d, b));
+        if (std::isfinite(t)) pts.push_back((o + t * d).cast<float>());
+      }
+    s.points.push_back(std::move(pts));
+  }
+  // The veil: mixed pixels of the jamb edge near the scanners' height, one per voxel, a layer or
+  // two from where the rays through them end on the far walls.
+  for (double z = 0.925; z < 1.1; z += 0.05)
+    s.veil.push_back((Eigen::Vector3d(2.05, 1.075, z) + shift).cast<float>());
+  s.points[0].insert(s.points[0].end(), s.veil.begin(), s.veil.end());
+  for (std::size_t k = 0; k < positions.size(); ++k) {
+    s.sources.push_back({s.points[k], positions[k]});
+    s.all.insert(s.all.end(), s.points[k].begin(), s.points[k].end());
+  }
+  return s;
+}
+
+}  // namespace
+
+// A veil across a doorway seen from trajectory positions on both sides: the rays that cross it
+// end on the far walls at about its height (the layer offset alone keeps it); a ray whose end
+// lies ghosts.far_end_m beyond the voxel counts, and the veil goes. A thin post, whose sparse
+// voxels rays pass beside, and every wall and floor voxel stay.
+TEST(Ghosts, DoorwayVeilGoesThinPostStays) {
+  const DoorwayScan s = doorway_scan();
+  VoxelParams vp;
+  const VoxelGrid g0 = voxelize(s.all, robust_bounds(s.all, vp), vp);
+  auto veil_left = [&](const VoxelGrid& g) {
+    int n = 0;
+    for (const auto& p : s.veil) n += g.counts[voxel_of(g, p)] > 0;
+    return n;
+  };
+  auto post_voxels = [&](const VoxelGrid& g, int* candidates) {
+    int n = 0;
+    for (const auto& p : s.all)
+      if ((p.cast<double>().array() >= s.post.lo.array() - 1e-6).all() &&
+          (p.cast<double>().array() <= s.post.hi.array() + 1e-6).all()) {
+        const auto c = g.counts[voxel_of(g, p)];
+        n += c > 0;
+        if (candidates) *candidates += g0.counts[voxel_of(g0, p)] <= 2;
+      }
+    return n;
+  };
+  int post_candidates = 0;
+  const int post_points = post_voxels(g0, &post_candidates);
+  ASSERT_GT(post_points, 20);
+  ASSERT_GT(post_candidates, 0);  // the post is sparse: some of its voxels could go
+  ASSERT_EQ(veil_left(g0), static_cast<int>(s.veil.size()));
+
+  GhostParams old_rule;
+  old_rule.far_end_m = 0;
+  VoxelGrid before = g0, after = g0;
+  const GhostResult r0 = remove_ghost_voxels_by_origin(before, s.sources, old_rule);
+  const GhostResult r1 = remove_ghost_voxels_by_origin(after, s.sources, GhostParams{});
+  std::printf(
+      "[ figures  ] veil voxels left: %d (layer offset alone), %d (far_end_m %.1f) of %zu; "
+      "voxels removed %lld, %lld\n",
+      veil_left(before), veil_left(after), GhostParams{}.far_end_m, s.veil.size(),
+      static_cast<long long>(r0.voxels_removed), static_cast<long long>(r1.voxels_removed));
+  EXPECT_GE(veil_left(before), 3);  // the old rule keeps the veil
+  EXPECT_EQ(veil_left(after), 0);
+  // The post stays: rays pass beside it through its voxels, but too few per point in them.
+  EXPECT_EQ(post_voxels(before, nullptr), post_points);
+  EXPECT_EQ(post_voxels(after, nullptr), post_points);
+  // Beyond the old rule's, only the veil and the jamb's face goes: seen edge-on from the
+  // positions in front of the door, its voxels hold a point or two and the rays through the door
+  // pass beside it (the old rule already cleared its voxels above and below the scanners'
+  // height); every other wall, the floor and the ceiling stay.
+  const Eigen::Vector3f jamb_lo = Eigen::Vector3f(1.95f, 0.95f, 0.0f).array() + kDoorwayShift,
+                        jamb_hi = Eigen::Vector3f(2.15f, 1.05f, 2.0f).array() + kDoorwayShift;
+  int other_lost = 0, jamb_lost = 0;
+  for (std::size_t i = 0; i < g0.counts.size(); ++i) {
+    if (before.counts[i] == after.counts[i]) continue;
+    const std::int64_t nxy = g0.layer_size(), iz = static_cast<std::int64_t>(i) / nxy,
+                       iy = (static_cast<std::int64_t>(i) % nxy) / g0.nx,
+                       ix = static_cast<std::int64_t>(i) % g0.nx;
+    const Eigen::Vector3f c =
+        (g0.origin_m + (Eigen::Vector3d(ix, iy, iz).array() + 0.5).matrix() * g0.cell_m)
+            .cast<float>();
+    const bool veil = std::any_of(s.veil.begin(), s.veil.end(),
+                                  [&](const Eigen::Vector3f& p) { return voxel_of(g0, p) == i; });
+    const bool jamb = (c.array() >= jamb_lo.array()).all() && (c.array() <= jamb_hi.array()).all();
+    other_lost += !veil && !jamb;
+    jamb_lost += !veil && jamb;
+  }
+  std::printf("[ figures  ] jamb-edge voxels cleared by the new rule only: %d\n", jamb_lost);
+  EXPECT_EQ(other_lost, 0);
+
+  VoxelGrid ref = g0;
+  reference_remove_ghost_voxels(ref, s.sources, GhostParams{});
+  EXPECT_EQ(ref.counts, after.counts);
 }
 
 TEST(Ghosts, EmptyInputsAndFarScannerAreHarmless) {

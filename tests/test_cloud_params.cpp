@@ -61,6 +61,9 @@ TEST(CloudParams, EachStructNamesItsKey) {
   gh.max_rays = 0;
   EXPECT_EQ(usage_error([&] { validate(gh); }),
             "invalid parameter ghosts.max_rays: must be in [1, 1e9]");
+  gh = {};
+  gh.far_end_m = -0.5;
+  EXPECT_EQ(usage_error([&] { validate(gh); }), "invalid parameter ghosts.far_end_m: must be >= 0");
 }
 
 TEST(CloudParams, EntryPointsValidate) {

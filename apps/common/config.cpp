@@ -59,6 +59,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("ghosts", "min_pass_ratio", gh.min_pass_ratio);
   f("ghosts", "min_passes", gh.min_passes);
   f("ghosts", "min_layer_offset", gh.min_layer_offset);
+  f("ghosts", "far_end_m", gh.far_end_m);
   f("ghosts", "end_skip_m", gh.end_skip_m);
   f("ghosts", "max_rays", gh.max_rays);
   auto& ly = c.map.layers;

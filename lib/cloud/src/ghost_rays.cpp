@@ -56,7 +56,7 @@ std::vector<double> quantile_edges(const std::vector<double>& values, int n) {
 
 RayFan::RayFan(const VoxelGrid& g, std::span<const Eigen::Vector3f> points,
                const Eigen::Vector3d& scanner, std::size_t stride, double skip_cells)
-    : s_(g.to_voxel_coords(scanner)) {
+    : s_(g.to_voxel_coords(scanner)), skip_(skip_cells) {
   const double n[3] = {static_cast<double>(g.nx), static_cast<double>(g.ny),
                        static_cast<double>(g.nz)};
   std::vector<Ray> rays;
@@ -120,7 +120,7 @@ int RayFan::Bins::of(double v) const {
 }
 
 int RayFan::passes(std::int64_t ix, std::int64_t iy, std::int64_t iz, int min_layer_offset,
-                   int cap) const {
+                   double far_end_cells, int cap) const {
   const Eigen::Vector3d lo = Eigen::Vector3d(ix, iy, iz) - s_, hi = lo + Eigen::Vector3d::Ones();
   // Horizontal distances from the scanner to the box's footprint: nearest and farthest.
   const double nx = std::max({lo.x(), 0.0, -hi.x()}), ny = std::max({lo.y(), 0.0, -hi.y()});
@@ -148,13 +148,24 @@ int RayFan::passes(std::int64_t ix, std::int64_t iy, std::int64_t iz, int min_la
     a_count = (a1 - a0 + na_) % na_ + 1;
   }
   const Eigen::Vector3f lo_f = lo.cast<float>(), hi_f = hi.cast<float>();
+  const Eigen::Vector3f centre = (lo_f + hi_f) * 0.5f;
+  const float far2 = static_cast<float>(far_end_cells * far_end_cells);
+  // A ray ending near the voxel's layer counts only when its end (the point, skip included) lies
+  // at least far_end_cells from the voxel's centre.
+  auto far_end = [&](const Ray& r) {
+    const float len = r.d.norm();
+    const Eigen::Vector3f e = r.d * (1.0f + static_cast<float>(skip_) / len) - centre;
+    return e.squaredNorm() >= far2;
+  };
   int count = 0;
   // The bins of one row are consecutive in rays_: the arc is one run of rays per row, or two
   // when it wraps past the last azimuth bin.
   auto scan = [&](std::size_t first_bin, std::size_t last_bin) {
     for (std::uint32_t i = offsets_[first_bin]; i < offsets_[last_bin + 1]; ++i) {
       const Ray& r = rays_[i];
-      if (iz > r.end_layer - min_layer_offset && iz < r.end_layer + min_layer_offset) continue;
+      const bool near_layer =
+          iz > r.end_layer - min_layer_offset && iz < r.end_layer + min_layer_offset;
+      if (near_layer && !(far2 > 0.0f && far_end(r))) continue;
       if (meets(r.d, lo_f, hi_f) && ++count >= cap) return true;
     }
     return false;

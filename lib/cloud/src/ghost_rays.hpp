@@ -27,9 +27,10 @@ class RayFan {
          const Eigen::Vector3d& scanner, std::size_t stride, double skip_cells);
   std::size_t size() const { return rays_.size(); }
   /// The rays whose kept stretch passes through voxel (ix, iy, iz) and that end at least
-  /// min_layer_offset layers above or below it, counted up to cap.
+  /// min_layer_offset layers above or below it, or (far_end_cells > 0) whose end lies at least
+  /// far_end_cells from the voxel's centre, counted up to cap.
   int passes(std::int64_t ix, std::int64_t iy, std::int64_t iz, int min_layer_offset,
-             int cap) const;
+             double far_end_cells, int cap) const;
 
  private:
   /// 16 bytes: the index is scanned in bin order, and float keeps 1e-4 voxel at 2000 voxels.
@@ -54,6 +55,7 @@ class RayFan {
   int bin_a(double a) const { return a_bins_.of(a); }
   int bin_q(double q) const { return q_bins_.of(q); }
   Eigen::Vector3d s_;  ///< the scanner, voxel coordinates
+  double skip_ = 0.0;  ///< the left-out end of every ray, voxel units
   int na_ = 1, nq_ = 1;
   Bins a_bins_, q_bins_;
   std::vector<Ray> rays_;  ///< sorted by bin

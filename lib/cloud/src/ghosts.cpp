@@ -18,6 +18,7 @@ void validate(const GhostParams& gh) {
   require(gh.min_pass_ratio > 0, "ghosts.min_pass_ratio: must be > 0");
   require(gh.min_passes >= 1, "ghosts.min_passes: must be >= 1");
   require(gh.min_layer_offset >= 0, "ghosts.min_layer_offset: must be >= 0");
+  require(gh.far_end_m >= 0, "ghosts.far_end_m: must be >= 0");
   require(gh.end_skip_m >= 0, "ghosts.end_skip_m: must be >= 0");
   require(gh.max_rays >= 1 && gh.max_rays <= 1'000'000'000, "ghosts.max_rays: must be in [1, 1e9]");
 }
@@ -82,6 +83,7 @@ GhostResult remove_ghost_voxels_by_origin(VoxelGrid& g, const std::vector<RaySou
   ProgressTicker ticker(params.progress,
                         sources_used * static_cast<std::int64_t>(candidates.size()), 16384);
   const std::int64_t nxy = g.layer_size();
+  const double far_end_cells = g.to_cells(params.far_end_m);
   for (const auto& src : sources) {
     if (!src.scanner.allFinite()) continue;
     const detail::RayFan fan(g, src.points, src.scanner, stride, g.to_cells(params.end_skip_m));
@@ -90,7 +92,7 @@ GhostResult remove_ghost_voxels_by_origin(VoxelGrid& g, const std::vector<RaySou
       ticker.tick();
       if (passes[k] >= cap) continue;
       const std::int64_t i = candidates[k], iz = i / nxy, iy = (i % nxy) / g.nx, ix = i % g.nx;
-      passes[k] += fan.passes(ix, iy, iz, params.min_layer_offset, cap - passes[k]);
+      passes[k] += fan.passes(ix, iy, iz, params.min_layer_offset, far_end_cells, cap - passes[k]);
     }
   }
   ticker.finish();

@@ -25,6 +25,10 @@ struct GhostParams {
   /// grazes a horizontal surface (a table top seen from afar) runs through the surface's own
   /// layer before it lands, and would take the top for a ghost.
   int min_layer_offset = 4;
+  /// ... unless its end lies at least this far from the voxel (0: never): the grazing stretch
+  /// of a ray is the last few decimetres before it lands on the surface, while a ray that
+  /// crossed a doorway's veil at the height where it ends on a far wall saw the voxel empty.
+  double far_end_m = 1.0;
   double end_skip_m = 0.1;         ///< the last stretch of every ray (its own surface) counts not
   std::size_t max_rays = 500'000;  ///< at most this many rays are used (every k-th point)
   /// Candidate voxels tested of those to test (per scanner position), every 16384 (empty:
