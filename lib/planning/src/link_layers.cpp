@@ -13,8 +13,11 @@
 // live cell is skipped, and whole cells with it. Live cells are counted in 8 x 8 blocks, so the
 // test is conservative (it never skips a new cell).
 #include <algorithm>
+#include <bit>
 #include <limits>
+#include <utility>
 
+#include "link_bits.hpp"
 #include "planner_internal.hpp"
 
 namespace indoormap::planning::detail {
@@ -24,6 +27,7 @@ namespace {
 constexpr int kLinkBlockShift = 3;             ///< 8 x 8 cell blocks
 constexpr std::int32_t kLinkTestSubtree = 24;  ///< test subtrees of at least this many nodes
 constexpr std::int32_t kLinkNone = -1;
+constexpr int kLinkTileRows = 16;  ///< rows of a frontier tile (64 columns: one bit word)
 
 /// Bounding box of the end points in each prefix-tree node's subtree (template offsets).
 struct LinkBoxes {
@@ -50,12 +54,25 @@ LinkBoxes link_subtree_boxes(const NeighbourhoodTemplate& t) {
   return b;
 }
 
+/// Depth of each prefix-tree node in its depth-first order (the root's children: 1).
+std::vector<int> link_node_depths(const NeighbourhoodTemplate& t) {
+  std::vector<int> depth(t.dx.size());
+  std::vector<std::int32_t> open;  // subtree ends of the node's ancestors
+  for (std::size_t i = 0; i < t.dx.size(); ++i) {
+    while (!open.empty() && open.back() <= static_cast<std::int32_t>(i)) open.pop_back();
+    depth[i] = static_cast<int>(open.size()) + 1;
+    open.push_back(t.skip[i]);
+  }
+  return depth;
+}
+
 /// One side of the search: the layer of every cell (-1: not reached), its parent towards the
 /// side's root, the current frontier layer and the live cells per block (safe, not reached, and
 /// still able to lie on a route within the bound).
 struct LinkSide {
   std::vector<std::int32_t> layer, parent, frontier;
   std::vector<std::int32_t> alive;
+  BitRows live;                                   ///< the live cells themselves
   const std::vector<std::uint16_t>* h = nullptr;  ///< lower bound on the moves to the other root
   int depth = 0;          ///< every cell within `depth` moves (and the bound) is known
   int max_h = 0;          ///< cells with h > max_h cannot be reached usefully any more
@@ -72,11 +89,20 @@ class LinkSearch {
         start_(start),
         goal_(goal),
         boxes_(link_subtree_boxes(t)),
+        depth_(link_node_depths(t)),
         h_goal_(moves_bound_from(chamfer_from(safe, {goal % safe.width, goal / safe.width}), t)),
         h_start_(
             moves_bound_from(chamfer_from(safe, {start % safe.width, start / safe.width}), t)) {
     bw_ = (safe.width + 7) >> kLinkBlockShift;
     bh_ = (safe.height + 7) >> kLinkBlockShift;
+    safe_bits_ = blank_bits();
+    for (int r = 0; r < safe.height; ++r)
+      for (int c = 0; c < safe.width; ++c)
+        if (safe.at(c, r) == SafeCell::kSafe) safe_bits_.set(c, r);
+    const int max_depth = depth_.empty() ? 0 : *std::max_element(depth_.begin(), depth_.end());
+    masks_.assign(static_cast<std::size_t>(max_depth + 1) * kLinkTileRows, 0);
+    lo_.assign(static_cast<std::size_t>(max_depth + 1), 0);
+    hi_.assign(static_cast<std::size_t>(max_depth + 1), -1);
     fwd_.h = &h_goal_, bwd_.h = &h_start_;
     fwd_.backward = false, bwd_.backward = true;
     for (auto* side : {&fwd_, &bwd_}) {  // cells by bound, for the per-layer cut
@@ -146,15 +172,25 @@ class LinkSearch {
     s.layer.assign(safe_.size(), kLinkNone);
     s.parent.assign(safe_.size(), kLinkNone);
     s.alive.assign(static_cast<std::size_t>(bw_) * bh_, 0);
+    s.live = blank_bits();
     s.max_h = std::min<int>(bound_ - 1, static_cast<int>(by_h(s).size()) - 1);
     if (static_cast<int>(by_h(s).size()) - 1 > s.max_h) excluded_ = true;
     for (int hv = 0; hv <= s.max_h; ++hv)
       for (const auto i : by_h(s)[static_cast<std::size_t>(hv)])
-        if (safe_.data[static_cast<std::size_t>(i)] == SafeCell::kSafe)
+        if (safe_.data[static_cast<std::size_t>(i)] == SafeCell::kSafe) {
           ++s.alive[block(i % safe_.width, i / safe_.width)];
+          s.live.set(i % safe_.width, i / safe_.width);
+        }
     s.depth = 0;
     reach(s, root, kLinkNone, 0);
+    s.live.reset(root % safe_.width, root / safe_.width);
     s.frontier.assign(1, root);
+  }
+
+  /// All-zero bits of the map, with the margins walk_tile reads.
+  BitRows blank_bits() const {
+    return BitRows(safe_.width, safe_.height, t_.radius_cells + 64,
+                   t_.radius_cells + kLinkTileRows);
   }
 
   std::size_t block(int c, int r) const {
@@ -181,30 +217,47 @@ class LinkSearch {
   }
 
   /// Expands the frontier layer k of `s` into layer k + 1, whose cells must have h <= B - k - 1
-  /// to lie on a route of at most B moves. False when the budget ran out.
+  /// to lie on a route of at most B moves. False when the budget ran out. The frontier goes by
+  /// tiles of 64 x kLinkTileRows cells, each walking the template once for all its cells.
   bool grow(LinkSide& s, const LinkSide& other, SearchBudget& budget, ExactResult& res) {
     const int k = s.depth;
     for (; s.max_h > bound_ - k - 1 && s.max_h >= 0; --s.max_h)  // now out of reach
       for (const auto i : by_h(s)[static_cast<std::size_t>(s.max_h)]) {
         excluded_ = true;
         if (s.layer[static_cast<std::size_t>(i)] == kLinkNone &&
-            safe_.data[static_cast<std::size_t>(i)] == SafeCell::kSafe)
+            safe_.data[static_cast<std::size_t>(i)] == SafeCell::kSafe) {
           --s.alive[block(i % safe_.width, i / safe_.width)];
+          s.live.reset(i % safe_.width, i / safe_.width);
+        }
       }
+    const int w = safe_.width, tiles_per_row = (w + 63) / 64;
+    auto tile_of = [&](std::int32_t i) {
+      return (i / w) / kLinkTileRows * tiles_per_row + (i % w) / 64;
+    };
+    std::sort(s.frontier.begin(), s.frontier.end(),
+              [&](std::int32_t a, std::int32_t b) { return tile_of(a) < tile_of(b); });
+    const bool any_length = s.backward && k == 0;  // the route's last move
     std::vector<std::int32_t> next;
-    for (const std::int32_t ci : s.frontier) {
-      const int c = ci % safe_.width, r = ci / safe_.width;
-      const int rad = t_.radius_cells;
-      if (!any_alive(s, c - rad, c + rad, r - rad, r + rad)) continue;  // sees nothing new
-      if (!budget.spend("min_link", res.nodes)) return false;
-      const bool any_length = s.backward && k == 0;  // the route's last move
-      walk(s, c, r, any_length, [&](std::int32_t j) {
-        if ((*s.h)[static_cast<std::size_t>(j)] > s.max_h) return;  // cut by the bound
-        reach(s, j, ci, k + 1);
-        next.push_back(j);
-        const std::int32_t o = other.layer[static_cast<std::size_t>(j)];
-        if (o != kLinkNone && std::int64_t{k} + 1 + o < best_) best_ = k + 1 + o, meet_ = j;
-      });
+    for (std::size_t f = 0; f < s.frontier.size();) {
+      const int tile = tile_of(s.frontier[f]);
+      const int row0 = tile / tiles_per_row * kLinkTileRows, col0 = tile % tiles_per_row * 64;
+      std::fill(masks_.begin(), masks_.begin() + kLinkTileRows, 0);
+      int cells = 0;
+      for (; f < s.frontier.size() && tile_of(s.frontier[f]) == tile; ++f, ++cells) {
+        const std::int32_t i = s.frontier[f];
+        masks_[static_cast<std::size_t>(i / w - row0)] |= std::uint64_t{1} << (i % w - col0);
+      }
+      if (!walk_tile(s, col0, row0, any_length, k, [&] {
+            for (int c = 0; c < cells; ++c)
+              if (!budget.spend("min_link", res.nodes)) return false;
+            return true;
+          }))
+        return false;
+      for (const auto& [to, from] : reached_) {
+        next.push_back(to);
+        const std::int32_t o = other.layer[static_cast<std::size_t>(to)];
+        if (o != kLinkNone && std::int64_t{k} + 1 + o < best_) best_ = k + 1 + o, meet_ = to;
+      }
       if (best_ <= bound_) break;  // a route of b moves: done (the layer is left unfinished)
     }
     s.frontier = std::move(next);
@@ -212,34 +265,70 @@ class LinkSearch {
     return true;
   }
 
-  /// for_each_visible's template walk from cell (c, r), also skipping every subtree whose end
-  /// points' box holds no live cell; calls f(cell) for each visible cell not reached yet (length
-  /// >= D_min unless any_length).
-  template <class F>
-  void walk(const LinkSide& s, int c, int r, bool any_length, F&& f) const {
-    const int w = safe_.width, h = safe_.height;
+  /// for_each_visible's template walk from every cell of one tile at once (bit b of masks_[r]:
+  /// frontier cell (col0 + b, row0 + r)): a node's mask keeps the cells whose line up to it is all
+  /// kSafe, and a subtree is skipped when the mask is empty or its end points' box (over the
+  /// mask's cells) holds no live cell. Every visible live end point (length >= D_min unless
+  /// any_length) is reached with layer k + 1 and listed in reached_ with its parent. False when
+  /// spend() (called once, if the tile sees anything) refuses.
+  template <class Spend>
+  bool walk_tile(LinkSide& s, int col0, int row0, bool any_length, int k, Spend&& spend) {
+    constexpr int R = kLinkTileRows;
+    const int rad = t_.radius_cells;
+    reached_.clear();
+    {
+      int lo = R, hi = -1;
+      std::uint64_t any = 0;
+      for (int r = 0; r < R; ++r)
+        if (masks_[static_cast<std::size_t>(r)] != 0)
+          lo = std::min(lo, r), hi = r, any |= masks_[static_cast<std::size_t>(r)];
+      if (!any_alive(s, col0 + std::countr_zero(any) - rad, col0 + 63 - std::countl_zero(any) + rad,
+                     row0 + lo - rad, row0 + hi + rad))
+        return true;  // sees nothing new
+      if (!spend()) return false;
+      lo_[0] = lo, hi_[0] = hi;
+    }
     const std::size_t n = t_.dx.size();
     std::size_t i = 0;
     while (i < n) {
-      const int cc = c + t_.dx[i], rr = r + t_.dy[i];
+      const int d = depth_[i], dx = t_.dx[i], dy = t_.dy[i];
+      const std::uint64_t* par = &masks_[static_cast<std::size_t>(d - 1) * R];
+      std::uint64_t* cur = &masks_[static_cast<std::size_t>(d) * R];
+      int lo = R, hi = -1;
+      std::uint64_t any = 0;
+      for (int r = lo_[d - 1]; r <= hi_[d - 1]; ++r) {
+        const std::uint64_t v = par[r] & safe_bits_.window(col0 + dx, row0 + r + dy);
+        cur[r] = v;
+        if (v != 0) lo = std::min(lo, r), hi = r, any |= v;
+      }
       const auto sk = static_cast<std::size_t>(t_.skip[i]);
-      if (cc < 0 || rr < 0 || cc >= w || rr >= h) {
+      if (any == 0 || (static_cast<std::int32_t>(sk - i) >= kLinkTestSubtree &&
+                       !any_alive(s, col0 + std::countr_zero(any) + boxes_.x0[i],
+                                  col0 + 63 - std::countl_zero(any) + boxes_.x1[i],
+                                  row0 + lo + boxes_.y0[i], row0 + hi + boxes_.y1[i]))) {
         i = sk;
         continue;
       }
-      const std::size_t j = idx(w, {cc, rr});
-      if (safe_.data[j] != SafeCell::kSafe ||
-          (static_cast<std::int32_t>(sk - i) >= kLinkTestSubtree &&
-           !any_alive(s, c + boxes_.x0[i], c + boxes_.x1[i], r + boxes_.y0[i], r + boxes_.y1[i]))) {
-        i = sk;
-        continue;
-      }
+      lo_[d] = lo, hi_[d] = hi;
       if (const auto e = t_.end_point[i];
-          e >= 0 && s.layer[j] == kLinkNone &&
+          e >= 0 &&
           (any_length || t_.end_points[static_cast<std::size_t>(e)].length_m >= p_.d_min_m))
-        f(static_cast<std::int32_t>(j));
+        for (int r = lo; r <= hi; ++r) {
+          std::uint64_t fresh = cur[r] & s.live.window(col0 + dx, row0 + r + dy);
+          if (fresh == 0) continue;
+          s.live.clear_window(col0 + dx, row0 + r + dy, fresh);
+          for (; fresh != 0; fresh &= fresh - 1) {
+            const int b = std::countr_zero(fresh);
+            const auto to =
+                static_cast<std::int32_t>(idx(safe_.width, {col0 + b + dx, row0 + r + dy}));
+            const auto from = static_cast<std::int32_t>(idx(safe_.width, {col0 + b, row0 + r}));
+            reach(s, to, from, k + 1);
+            reached_.push_back({to, from});
+          }
+        }
       ++i;
     }
+    return true;
   }
 
   const Grid<SafeCell>& safe_;
@@ -247,6 +336,11 @@ class LinkSearch {
   const PlannerParams& p_;
   std::int32_t start_, goal_;
   LinkBoxes boxes_;
+  std::vector<std::int32_t> depth_;   ///< depth of each prefix-tree node (root children: 1)
+  BitRows safe_bits_;                 ///< kSafe cells
+  std::vector<std::uint64_t> masks_;  ///< walk_tile's masks, kLinkTileRows per tree depth
+  std::vector<int> lo_, hi_;          ///< rows of walk_tile's masks that may be non-zero
+  std::vector<std::pair<std::int32_t, std::int32_t>> reached_;  ///< (cell, parent) by walk_tile
   std::vector<std::uint16_t> h_goal_, h_start_;
   std::vector<std::vector<std::int32_t>> by_h_goal_, by_h_start_;
   int bw_ = 0, bh_ = 0, bound_ = 0;
