@@ -101,8 +101,6 @@ class LinkSearch {
         if (safe.at(c, r) == SafeCell::kSafe) safe_bits_.set(c, r);
     const int max_depth = depth_.empty() ? 0 : *std::max_element(depth_.begin(), depth_.end());
     masks_.assign(static_cast<std::size_t>(max_depth + 1) * kLinkTileRows, 0);
-    lo_.assign(static_cast<std::size_t>(max_depth + 1), 0);
-    hi_.assign(static_cast<std::size_t>(max_depth + 1), -1);
     fwd_.h = &h_goal_, bwd_.h = &h_start_;
     fwd_.backward = false, bwd_.backward = true;
     for (auto* side : {&fwd_, &bwd_}) {  // cells by bound, for the per-layer cut
@@ -265,6 +263,20 @@ class LinkSearch {
     return true;
   }
 
+  /// cur[j] = par[j] & window j of `col`, for the kLinkTileRows rows of a tile; their union.
+  static std::uint64_t and_rows(const std::uint64_t* __restrict par, std::uint64_t* __restrict cur,
+                                BitRows::Column col) {
+    std::uint64_t any = 0;
+    if (col.s == 0) {
+      for (int j = 0; j < kLinkTileRows; ++j) any |= cur[j] = par[j] & col.a[j];
+    } else {
+      const unsigned s = col.s, t = 64 - col.s;
+      for (int j = 0; j < kLinkTileRows; ++j)
+        any |= cur[j] = par[j] & ((col.a[j] >> s) | (col.b[j] << t));
+    }
+    return any;
+  }
+
   /// for_each_visible's template walk from every cell of one tile at once (bit b of masks_[r]:
   /// frontier cell (col0 + b, row0 + r)): a node's mask keeps the cells whose line up to it is all
   /// kSafe, and a subtree is skipped when the mask is empty or its end points' box (over the
@@ -286,30 +298,29 @@ class LinkSearch {
                      row0 + lo - rad, row0 + hi + rad))
         return true;  // sees nothing new
       if (!spend()) return false;
-      lo_[0] = lo, hi_[0] = hi;
     }
     const std::size_t n = t_.dx.size();
     std::size_t i = 0;
     while (i < n) {
       const int d = depth_[i], dx = t_.dx[i], dy = t_.dy[i];
-      const std::uint64_t* par = &masks_[static_cast<std::size_t>(d - 1) * R];
       std::uint64_t* cur = &masks_[static_cast<std::size_t>(d) * R];
-      int lo = R, hi = -1;
-      std::uint64_t any = 0;
-      for (int r = lo_[d - 1]; r <= hi_[d - 1]; ++r) {
-        const std::uint64_t v = par[r] & safe_bits_.window(col0 + dx, row0 + r + dy);
-        cur[r] = v;
-        if (v != 0) lo = std::min(lo, r), hi = r, any |= v;
-      }
+      const std::uint64_t any = and_rows(&masks_[static_cast<std::size_t>(d - 1) * R], cur,
+                                         safe_bits_.column(col0 + dx, row0 + dy));
       const auto sk = static_cast<std::size_t>(t_.skip[i]);
-      if (any == 0 || (static_cast<std::int32_t>(sk - i) >= kLinkTestSubtree &&
-                       !any_alive(s, col0 + std::countr_zero(any) + boxes_.x0[i],
-                                  col0 + 63 - std::countl_zero(any) + boxes_.x1[i],
-                                  row0 + lo + boxes_.y0[i], row0 + hi + boxes_.y1[i]))) {
+      if (any == 0) {
         i = sk;
         continue;
       }
-      lo_[d] = lo, hi_[d] = hi;
+      int lo = 0, hi = R - 1;
+      while (cur[lo] == 0) ++lo;
+      while (cur[hi] == 0) --hi;
+      if (static_cast<std::int32_t>(sk - i) >= kLinkTestSubtree &&
+          !any_alive(s, col0 + std::countr_zero(any) + boxes_.x0[i],
+                     col0 + 63 - std::countl_zero(any) + boxes_.x1[i], row0 + lo + boxes_.y0[i],
+                     row0 + hi + boxes_.y1[i])) {
+        i = sk;
+        continue;
+      }
       if (const auto e = t_.end_point[i];
           e >= 0 &&
           (any_length || t_.end_points[static_cast<std::size_t>(e)].length_m >= p_.d_min_m))
@@ -339,7 +350,6 @@ class LinkSearch {
   std::vector<std::int32_t> depth_;   ///< depth of each prefix-tree node (root children: 1)
   BitRows safe_bits_;                 ///< kSafe cells
   std::vector<std::uint64_t> masks_;  ///< walk_tile's masks, kLinkTileRows per tree depth
-  std::vector<int> lo_, hi_;          ///< rows of walk_tile's masks that may be non-zero
   std::vector<std::pair<std::int32_t, std::int32_t>> reached_;  ///< (cell, parent) by walk_tile
   std::vector<std::uint16_t> h_goal_, h_start_;
   std::vector<std::vector<std::int32_t>> by_h_goal_, by_h_start_;
