@@ -27,6 +27,7 @@ namespace {
 constexpr int kLinkBlockShift = 3;             ///< 8 x 8 cell blocks
 constexpr std::int32_t kLinkTestSubtree = 24;  ///< test subtrees of at least this many nodes
 constexpr std::int32_t kLinkNone = -1;
+constexpr std::uint8_t kLinkLongEnd = 1, kLinkShortEnd = 2;
 constexpr int kLinkTileRows = 16;  ///< rows of a frontier tile (64 columns: one bit word)
 
 /// Bounding box of the end points in each prefix-tree node's subtree (template offsets).
@@ -66,12 +67,24 @@ std::vector<int> link_node_depths(const NeighbourhoodTemplate& t) {
   return depth;
 }
 
+/// Per prefix-tree node: kLinkLongEnd where it ends a move of at least D_min, kLinkShortEnd where
+/// it ends a shorter one (only the route's last move), else 0.
+std::vector<std::uint8_t> link_end_kinds(const NeighbourhoodTemplate& t, double d_min_m) {
+  std::vector<std::uint8_t> kind(t.dx.size(), 0);
+  for (std::size_t i = 0; i < t.dx.size(); ++i)
+    if (const auto e = t.end_point[i]; e >= 0)
+      kind[i] = t.end_points[static_cast<std::size_t>(e)].length_m >= d_min_m ? kLinkLongEnd
+                                                                              : kLinkShortEnd;
+  return kind;
+}
+
 /// One side of the search: the layer of every cell (-1: not reached), its parent towards the
 /// side's root, the current frontier layer and the live cells per block (safe, not reached, and
 /// still able to lie on a route within the bound).
 struct LinkSide {
   std::vector<std::int32_t> layer, parent, frontier;
   std::vector<std::int32_t> alive;
+  std::vector<std::uint64_t> alive_bits;          ///< one bit per block: does it hold a live cell?
   BitRows live;                                   ///< the live cells themselves
   const std::vector<std::uint16_t>* h = nullptr;  ///< lower bound on the moves to the other root
   int depth = 0;          ///< every cell within `depth` moves (and the bound) is known
@@ -90,11 +103,13 @@ class LinkSearch {
         goal_(goal),
         boxes_(link_subtree_boxes(t)),
         depth_(link_node_depths(t)),
+        end_kind_(link_end_kinds(t, p.d_min_m)),
         h_goal_(moves_bound_from(chamfer_from(safe, {goal % safe.width, goal / safe.width}), t)),
         h_start_(
             moves_bound_from(chamfer_from(safe, {start % safe.width, start / safe.width}), t)) {
     bw_ = (safe.width + 7) >> kLinkBlockShift;
     bh_ = (safe.height + 7) >> kLinkBlockShift;
+    bwords_ = static_cast<std::size_t>((bw_ + 63) / 64);
     safe_bits_ = blank_bits();
     for (int r = 0; r < safe.height; ++r)
       for (int c = 0; c < safe.width; ++c)
@@ -179,6 +194,10 @@ class LinkSearch {
           ++s.alive[block(i % safe_.width, i / safe_.width)];
           s.live.set(i % safe_.width, i / safe_.width);
         }
+    s.alive_bits.assign(static_cast<std::size_t>(bh_) * bwords_, 0);
+    for (std::size_t b = 0; b < s.alive.size(); ++b)
+      if (s.alive[b] > 0)
+        s.alive_bits[b / bw_ * bwords_ + (b % bw_ >> 6)] |= std::uint64_t{1} << (b % bw_ & 63);
     s.depth = 0;
     reach(s, root, kLinkNone, 0);
     s.live.reset(root % safe_.width, root / safe_.width);
@@ -200,17 +219,37 @@ class LinkSearch {
     const auto u = static_cast<std::size_t>(i);
     s.layer[u] = layer;
     s.parent[u] = from;
-    if ((*s.h)[u] <= s.max_h) --s.alive[block(i % safe_.width, i / safe_.width)];
+    if ((*s.h)[u] <= s.max_h) kill(s, block(i % safe_.width, i / safe_.width));
   }
 
-  /// Does the map rectangle [c0, c1] x [r0, r1] (clamped) hold a live cell of `s`?
+  /// One live cell of block b less.
+  void kill(LinkSide& s, std::size_t b) const {
+    if (--s.alive[b] == 0) {
+      const std::size_t br = b / static_cast<std::size_t>(bw_),
+                        bc = b % static_cast<std::size_t>(bw_);
+      s.alive_bits[br * bwords_ + (bc >> 6)] &= ~(std::uint64_t{1} << (bc & 63));
+    }
+  }
+
+  /// Does the map rectangle [c0, c1] x [r0, r1] (clamped) touch a block holding a live cell of
+  /// `s`? A word of block bits at a time.
   bool any_alive(const LinkSide& s, int c0, int c1, int r0, int r1) const {
     c0 = std::max(c0, 0), r0 = std::max(r0, 0);
     c1 = std::min(c1, safe_.width - 1), r1 = std::min(r1, safe_.height - 1);
     if (c0 > c1 || r0 > r1) return false;
-    for (int br = r0 >> kLinkBlockShift; br <= (r1 >> kLinkBlockShift); ++br)
-      for (int bc = c0 >> kLinkBlockShift; bc <= (c1 >> kLinkBlockShift); ++bc)
-        if (s.alive[static_cast<std::size_t>(br) * bw_ + bc] > 0) return true;
+    const int b0 = c0 >> kLinkBlockShift, b1 = c1 >> kLinkBlockShift;
+    const int w0 = b0 >> 6, w1 = b1 >> 6;
+    const std::uint64_t first = ~std::uint64_t{0} << (b0 & 63);
+    const std::uint64_t last = ~std::uint64_t{0} >> (63 - (b1 & 63));
+    for (int br = r0 >> kLinkBlockShift; br <= (r1 >> kLinkBlockShift); ++br) {
+      const std::uint64_t* row = &s.alive_bits[static_cast<std::size_t>(br) * bwords_];
+      for (int wi = w0; wi <= w1; ++wi) {
+        std::uint64_t m = row[wi];
+        if (wi == w0) m &= first;
+        if (wi == w1) m &= last;
+        if (m != 0) return true;
+      }
+    }
     return false;
   }
 
@@ -224,7 +263,7 @@ class LinkSearch {
         excluded_ = true;
         if (s.layer[static_cast<std::size_t>(i)] == kLinkNone &&
             safe_.data[static_cast<std::size_t>(i)] == SafeCell::kSafe) {
-          --s.alive[block(i % safe_.width, i / safe_.width)];
+          kill(s, block(i % safe_.width, i / safe_.width));
           s.live.reset(i % safe_.width, i / safe_.width);
         }
       }
@@ -321,9 +360,7 @@ class LinkSearch {
         i = sk;
         continue;
       }
-      if (const auto e = t_.end_point[i];
-          e >= 0 &&
-          (any_length || t_.end_points[static_cast<std::size_t>(e)].length_m >= p_.d_min_m))
+      if (end_kind_[i] == kLinkLongEnd || (any_length && end_kind_[i] == kLinkShortEnd))
         for (int r = lo; r <= hi; ++r) {
           std::uint64_t fresh = cur[r] & s.live.window(col0 + dx, row0 + r + dy);
           if (fresh == 0) continue;
@@ -347,13 +384,15 @@ class LinkSearch {
   const PlannerParams& p_;
   std::int32_t start_, goal_;
   LinkBoxes boxes_;
-  std::vector<std::int32_t> depth_;   ///< depth of each prefix-tree node (root children: 1)
-  BitRows safe_bits_;                 ///< kSafe cells
-  std::vector<std::uint64_t> masks_;  ///< walk_tile's masks, kLinkTileRows per tree depth
+  std::vector<std::int32_t> depth_;     ///< depth of each prefix-tree node (root children: 1)
+  std::vector<std::uint8_t> end_kind_;  ///< kLinkLongEnd, kLinkShortEnd or 0 per tree node
+  BitRows safe_bits_;                   ///< kSafe cells
+  std::vector<std::uint64_t> masks_;    ///< walk_tile's masks, kLinkTileRows per tree depth
   std::vector<std::pair<std::int32_t, std::int32_t>> reached_;  ///< (cell, parent) by walk_tile
   std::vector<std::uint16_t> h_goal_, h_start_;
   std::vector<std::vector<std::int32_t>> by_h_goal_, by_h_start_;
   int bw_ = 0, bh_ = 0, bound_ = 0;
+  std::size_t bwords_ = 0;  ///< words of block bits per row of blocks
   LinkSide fwd_, bwd_;
   std::int64_t best_ = std::numeric_limits<std::int64_t>::max();
   std::int32_t meet_ = kLinkNone;
