@@ -10,7 +10,8 @@
 // root <= B), so a failed run proves "more than B" cheaply and the first run that meets is
 // optimal. Within a run a cell sees nothing new once every cell it could reach is reached or cut:
 // every template subtree (a bundle of supercover lines) whose end points' bounding box holds no
-// live cell is skipped, and whole cells with it. Live cells are counted in 8 x 8 blocks, so the
+// live cell is skipped, and whole tiles with it. The template is walked once per tile of 64 x 16
+// frontier cells, one bit per cell (walk_tile). Live cells are marked per 8 x 8 block, so the
 // test is conservative (it never skips a new cell).
 #include <algorithm>
 #include <bit>
