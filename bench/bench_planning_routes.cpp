@@ -1,11 +1,13 @@
 // Fewest-moves routes on every shared room-segmentation map (NAME.png, the empty buildings, at
 // 0.05 m; skipped when ../shared/data is absent), between the map's far-apart pair
 // (planning::far_apart_cells), with the default robot and planner: the min-link search, the
-// paper's rules alone and the exact search in the same run, each through plan_routes with its
-// planner.search (safe zone and templates built once outside the timing). Counter "moves": the
-// best route's moves. The exact search runs once, on the reference map kReferenceMap; run with
+// paper's rules alone, the default planner (the paper's rules, then the min-link search bounded
+// by them) and the exact search in the same run, each through plan_routes (safe zone and
+// templates built once outside the timing). Counter "moves": the best route's moves. The exact
+// search runs once, on the reference map kReferenceMap (about 85 s CPU; hours on the larger
+// maps); run with
 //   bench_planning_routes --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
-// Results: docs/benchmarks.md ("Routes on building maps").
+// Results: docs/benchmarks.md ("Fewest-moves routes on building maps").
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -21,8 +23,7 @@ using namespace indoormap::planning;
 
 namespace {
 
-/// The map the exact search runs on (about a minute; on the others it takes many minutes to
-/// hours: scripts/exact_moves_rooms.sh records its moves once).
+/// The map the exact search runs on (its moves on all twelve maps: tests/test_planning_slow.cpp).
 constexpr const char* kReferenceMap = "Freiburg52_scan";
 
 struct MapCase {
@@ -66,19 +67,27 @@ std::vector<MapCase>& cases() {
   return all;
 }
 
-void run(benchmark::State& st, const MapCase& c, RouteSearch search) {
+/// `search` alone without a work budget (the paper's rules off unless it is kPaper), or the
+/// default planner with its default budget when `defaults`. Counter "nodes": the optimal
+/// search's expanded nodes (what planner.max_nodes bounds); "complete": it finished.
+void run(benchmark::State& st, const MapCase& c, RouteSearch search, bool defaults = false) {
   PlannerParams p;
-  p.search = search;
-  p.paper_rules = search == RouteSearch::kPaper;  // each search alone
-  p.max_nodes = 1'000'000'000;                    // no budget: the exact search must finish
-  p.max_seconds = 3600;
+  if (!defaults) {
+    p.search = search;
+    p.paper_rules = search == RouteSearch::kPaper;
+    p.max_nodes = 1'000'000'000;  // no budget: the exact search must finish
+    p.max_seconds = 3600;
+  }
   int moves = -1;
+  PlanResult res;
   for (auto _ : st) {
-    const auto res = plan_routes(c.safe, c.map.geometry, c.start, c.goal, templates(), p);
+    res = plan_routes(c.safe, c.map.geometry, c.start, c.goal, templates(), p);
     moves = res.routes.empty() ? -1 : res.routes.front().moves;
     benchmark::DoNotOptimize(moves);
   }
   st.counters["moves"] = moves;
+  st.counters["nodes"] = static_cast<double>(res.exact_nodes);
+  st.counters["complete"] = res.exact_complete;
   st.counters["cells"] = static_cast<double>(c.safe.size());
 }
 
@@ -89,6 +98,9 @@ const bool registered = [] {
     })->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("Paper/" + c.name).c_str(), [&c](benchmark::State& st) {
       run(st, c, RouteSearch::kPaper);
+    })->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Default/" + c.name).c_str(), [&c](benchmark::State& st) {
+      run(st, c, RouteSearch::kMinLink, true);
     })->Unit(benchmark::kMillisecond);
     if (c.name != kReferenceMap) continue;
     benchmark::RegisterBenchmark(("Exact/" + c.name).c_str(),

@@ -1,6 +1,7 @@
 // Tests of the minimum-link route search (lib/planning/src/min_link.cpp) against the exact
 // search (the reference) and the brute-force breadth-first reference of planning_fixtures.hpp:
-// hand maps, 50 random 40 x 40 maps, far-apart pairs of the shared room-segmentation maps.
+// hand maps, 50 random 40 x 40 maps, 12 random maps of several 64 x 16 frontier tiles, far-apart
+// pairs of the shared room-segmentation maps.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -288,4 +289,62 @@ TEST(MinLink, ShortLastMovesAndLongDmin) {
   }
   EXPECT_GE(pairs, 60);
   EXPECT_GE(detours, 3);  // goals in reach of one move that still take two or more
+}
+
+TEST(MinLink, WideMapsAcrossFrontierTiles) {
+  // The layers grow by tiles of 64 x 16 cells walked bit-parallel (link_layers.cpp): maps of
+  // 130 to 160 x 36 to 48 cells span several tiles both ways, with templates of 12 and 20 cells
+  // (wider than a tile's rows), so frontiers, moves and map edges cross tile borders. Far-apart
+  // and random pairs against the brute-force reference; every move passes the safety checks.
+  std::mt19937 rng(16017);
+  const double cell_m = 0.1;
+  int pairs = 0, with_route = 0, longest = 0;
+  for (int map = 0; map < 12; ++map) {
+    const int w = std::uniform_int_distribution<int>(130, 160)(rng);
+    const int h = std::uniform_int_distribution<int>(36, 48)(rng);
+    auto m = walled(w, h);
+    for (int k = 0; k < 4; ++k) {  // inner walls across the map, each with a door
+      const bool vertical = k % 2 == 0;
+      const int at = std::uniform_int_distribution<int>(8, (vertical ? w : h) - 9)(rng);
+      const int len = vertical ? h : w;
+      const int door = std::uniform_int_distribution<int>(2, len - 9)(rng);
+      for (int i = 1; i < len - 1; ++i)
+        if (i < door || i > door + 5) (vertical ? m.at(at, i) : m.at(i, at)) = Cell::kWall;
+    }
+    for (int b = 0; b < 10; ++b) {  // furniture
+      const int c0 = std::uniform_int_distribution<int>(1, w - 2)(rng);
+      const int r0 = std::uniform_int_distribution<int>(1, h - 2)(rng);
+      const int bw = std::uniform_int_distribution<int>(1, 8)(rng);
+      const int bh = std::uniform_int_distribution<int>(1, 8)(rng);
+      for (int r = r0; r < std::min(h - 1, r0 + bh); ++r)
+        for (int c = c0; c < std::min(w - 1, c0 + bw); ++c) m.at(c, r) = Cell::kFurniture;
+    }
+    const PlannerParams p = small_params(map % 2 == 0 ? 1.2 : 2.0);
+    const auto tmpl = make_templates(kRobot, p, cell_m);
+    const auto safe = safe_zone(m, tmpl.disk);
+    const GridGeometry geo({0, 0}, cell_m, w, h);
+    const auto cells = safe_cells(safe);
+    const auto far = far_apart_cells(safe);
+    if (!far) continue;
+    for (const auto& [s, g] :
+         {*far, std::make_pair(cells[rng() % cells.size()], cells[rng() % cells.size()])}) {
+      const int ref = reference_min_moves(safe, s, g, cell_m, p.d_min_m, p.d_max_m);
+      const auto ml = min_link_moves(safe, s, g, tmpl.neighbourhood, p);
+      ASSERT_TRUE(ml.complete);
+      const int got = ml.cells ? static_cast<int>(ml.cells->size()) - 1 : -1;
+      ASSERT_EQ(got, ref) << "map " << map << " (" << w << " x " << h << ")";
+      if (ml.cells) {
+        const Route r = make_route(*ml.cells, geo, 0.0, std::nullopt);
+        EXPECT_EQ(check_route(r, safe, geo, s, g, p), "") << "map " << map;
+        ++with_route;
+        longest = std::max(longest, got);
+      }
+      ++pairs;
+    }
+  }
+  EXPECT_GE(pairs, 20);
+  EXPECT_GE(with_route, 15);
+  EXPECT_GE(longest, 5);  // routes that turn through several doors
+  std::cout << "[ wide maps ] " << pairs << " pairs, " << with_route << " with a route, longest "
+            << longest << " moves\n";
 }
