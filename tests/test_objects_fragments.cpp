@@ -118,3 +118,119 @@ TEST(ObjectFragments, EveryFurnitureCellIsInAnObjectOrLeftOver) {
     expect_accounted(L, extract_objects(L, geo, g, flat_layers(), p), p);
   }
 }
+
+namespace {
+
+// A slab of furniture cells [c0, c1] x [r0, r1] between z0_m and z1_m (a seat, a table top), on
+// legs in its four corners when `legs`.
+void slab(Grid<Cell>& L, cloud::VoxelGrid& g, int c0, int c1, int r0, int r1, double z0_m,
+          double z1_m, bool legs) {
+  for (int r = r0; r <= r1; ++r)
+    for (int c = c0; c <= c1; ++c) {
+      L.at(c, r) = Cell::kFurniture;
+      fill_column(g, c, r, z0_m, z1_m);
+      if (legs && (c == c0 || c == c1) && (r == r0 || r == r1)) fill_column(g, c, r, 0.0, z0_m);
+    }
+}
+
+}  // namespace
+
+// A chair: the height rule cuts its backrest (top 0.9 m) off its seat (top 0.45 m); the backrest
+// starts at the seat's underside, 0.4 m above the floor: it rests on the seat, one object.
+TEST(ObjectFragments, ABackrestRestingOnItsSeatIsOneChair) {
+  const int w = 30, h = 30;
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  Grid<Cell> L(w, h, Cell::kFree);
+  auto g = voxels(w, h, 30);
+  slab(L, g, 5, 13, 5, 13, 0.401, 0.451, true);    // the seat, 9 x 9 cells
+  slab(L, g, 5, 13, 14, 15, 0.401, 0.901, false);  // the backrest, 9 x 2 cells along its edge
+  const auto res = extract_objects(L, geo, g, flat_layers(), {});
+  ASSERT_EQ(res.objects.size(), 1u);
+  EXPECT_EQ(res.objects[0].cells, 9 * 11);
+  expect_accounted(L, res, {});
+  // Without the resting rule's evidence (the backrest standing on the floor, a shelf beside a
+  // stool) they stay two objects.
+  Grid<Cell> L2(w, h, Cell::kFree);
+  auto g2 = voxels(w, h, 30);
+  slab(L2, g2, 5, 13, 5, 13, 0.401, 0.451, true);
+  slab(L2, g2, 5, 13, 14, 15, 0.0, 0.901, false);
+  EXPECT_EQ(extract_objects(L2, geo, g2, flat_layers(), {}).objects.size(), 2u);
+}
+
+// A table (top 0.70-0.75 m) touching a chair's seat (0.40-0.45 m): the table's underside is above
+// the seat, it does not rest on it; a cabinet from the floor beside the table stands by itself.
+TEST(ObjectFragments, ATableBesideASeatOrACabinetStaysSeparate) {
+  const int w = 50, h = 30;
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  Grid<Cell> L(w, h, Cell::kFree);
+  auto g = voxels(w, h, 30);
+  slab(L, g, 5, 24, 5, 20, 0.701, 0.751, true);   // the table
+  slab(L, g, 25, 33, 8, 16, 0.401, 0.451, true);  // a seat pushed against it
+  slab(L, g, 10, 19, 21, 26, 0.0, 0.951, false);  // a cabinet touching its other side
+  const auto res = extract_objects(L, geo, g, flat_layers(), {});
+  ASSERT_EQ(res.objects.size(), 3u);
+  expect_accounted(L, res, {});
+}
+
+namespace {
+
+// A room's wall along the top rows with a window: wall cells in rows [h-2, h-1] except columns
+// [wc0, wc1], where the wall below the sill (0.85 m) shows as furniture and the lintel (from 2.2 m
+// to the grid's top, 3 m) stands over its face row (h - 3). A `depth`-row piece of furniture in
+// front of the face, its top at top_m, when depth > 0.
+void window_wall(Grid<Cell>& L, cloud::VoxelGrid& g, int wc0, int wc1, int parapet_rows, int depth,
+                 double top_m) {
+  const int h = L.height;
+  for (int c = 0; c < L.width; ++c)
+    for (int r = h - 2; r < h; ++r)
+      if (c < wc0 || c > wc1) {
+        L.at(c, r) = Cell::kWall;
+        fill_column(g, c, r, 0.0, 3.0);
+      }
+  for (int c = wc0; c <= wc1; ++c) {
+    for (int r = h - 1 - parapet_rows; r < h; ++r) {
+      L.at(c, r) = Cell::kFurniture;
+      fill_column(g, c, r, 0.0, 0.851);
+    }
+    fill_column(g, c, h - 1 - parapet_rows, 2.2, 3.0);  // the lintel's face
+    for (int r = h - 1 - parapet_rows - depth; r < h - 1 - parapet_rows; ++r) {
+      L.at(c, r) = Cell::kFurniture;
+      fill_column(g, c, r, 0.0, top_m);
+    }
+  }
+}
+
+}  // namespace
+
+// The wall under a window is not an object: a lintel stands over its whole length.
+TEST(ObjectFragments, TheWallUnderAWindowIsNoObject) {
+  const int w = 40, h = 30;
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  Grid<Cell> L(w, h, Cell::kFree);
+  auto g = voxels(w, h, 60);
+  window_wall(L, g, 8, 31, 4, 0, 0.0);  // parapet 24 x 5 cells, lintel over its inner row
+  const auto res = extract_objects(L, geo, g, flat_layers(), {});
+  EXPECT_TRUE(res.objects.empty());
+  expect_accounted(L, res, {});
+  // The same cells with nothing above them (a low cabinet along the wall) are an object.
+  Grid<Cell> L2(w, h, Cell::kFree);
+  auto g2 = voxels(w, h, 60);
+  window_wall(L2, g2, 8, 31, 4, 0, 0.0);
+  for (int c = 8; c <= 31; ++c)
+    for (std::int64_t z = 0; z < g2.nz; ++z)
+      if (z * g2.cell_m > 2.0) g2.counts[(z * g2.ny + (h - 5)) * g2.nx + c] = 0;
+  EXPECT_EQ(extract_objects(L2, geo, g2, flat_layers(), {}).objects.size(), 1u);
+}
+
+// A cabinet under a window (0.5 m deep, touching the wall below the sill) keeps its place: the
+// lintel stands over a tenth of its cells only.
+TEST(ObjectFragments, ACabinetUnderAWindowIsAnObject) {
+  const int w = 40, h = 30;
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  Grid<Cell> L(w, h, Cell::kFree);
+  auto g = voxels(w, h, 60);
+  window_wall(L, g, 8, 31, 0, 10, 0.851);  // no wall thickness shown, a cabinet as high as the sill
+  const auto res = extract_objects(L, geo, g, flat_layers(), {});
+  ASSERT_EQ(res.objects.size(), 1u);
+  EXPECT_EQ(res.objects[0].cells, 24 * 11);
+}

@@ -16,8 +16,8 @@ int fragments_find(std::vector<int>& parent, int x) {
   return x;
 }
 
-// Median of the known tops of each label (NaN when none is known).
-std::vector<double> fragments_median_tops(const Labels& lab, const Grid<float>& top) {
+// Median of the known values (tops, bottoms) of each label (NaN when none is known).
+std::vector<double> fragments_medians(const Labels& lab, const Grid<float>& top) {
   std::vector<std::vector<float>> tops(static_cast<std::size_t>(lab.count) + 1);
   for (std::size_t i = 0; i < lab.labels.size(); ++i)
     if (lab.labels.data[i] && !std::isnan(top.data[i]))
@@ -56,7 +56,7 @@ std::map<std::pair<int, int>, std::int64_t> fragments_near_pairs(const Labels& l
 
 }  // namespace
 
-Labels join_fragments(const Labels& in, const Grid<float>& top, double cell_m,
+Labels join_fragments(const Labels& in, const PieceHeights& heights, double cell_m,
                       const ObjectParams& params) {
   const int n = in.count;
   if (n < 2 || params.join_gap_m <= 0) return in;
@@ -65,7 +65,8 @@ Labels join_fragments(const Labels& in, const Grid<float>& top, double cell_m,
       static_cast<std::int64_t>(std::ceil(params.min_area_m2 / (cell_m * cell_m) - 1e-9));
   std::vector<std::int64_t> area(n + 1, 0);
   for (int v : in.labels.data) ++area[v];
-  const std::vector<double> med = fragments_median_tops(in, top);
+  const std::vector<double> med = fragments_medians(in, heights.top);
+  const std::vector<double> med_bottom = fragments_medians(in, heights.bottom);
   const auto near = fragments_near_pairs(in, gap);
   std::vector<int> parent(n + 1);
   for (int i = 0; i <= n; ++i) parent[i] = i;
@@ -78,6 +79,28 @@ Labels join_fragments(const Labels& in, const Grid<float>& top, double cell_m,
     if (std::isnan(ta) || std::isnan(tb)) continue;
     if (std::abs(ta - tb) > params.split_height_step_m + 1e-6) continue;
     int a = fragments_find(parent, pair.first), b = fragments_find(parent, pair.second);
+    if (a == b) continue;
+    if (a > b) std::swap(a, b);
+    parent[b] = a;
+    set_area[a] += set_area[b];
+  }
+  // 1b. A piece whose body starts above the floor cannot stand by itself; when its bottom lies
+  //     within the height range of a piece a gap away or touching, it rests on that piece: one
+  //     object (a chair's backrest on its seat, which the height rule cut off). A table beside a
+  //     chair's seat does not rest on it (the table's underside is above the seat), nor does a
+  //     cabinet beside a desk (it stands on the floor). Per piece, as in step 1: the medians of
+  //     the pieces, not of the sets joined so far.
+  for (const auto& [pair, count] : near) {
+    int hi = pair.first, lo = pair.second;
+    if (std::isnan(med[hi]) || std::isnan(med[lo])) continue;
+    if (med[hi] < med[lo]) std::swap(hi, lo);
+    const double b_hi = med_bottom[hi], b_lo = med_bottom[lo];
+    const double tol = heights.layer_m + 1e-6;
+    if (std::isnan(b_hi) || std::isnan(b_lo)) continue;
+    if (area[hi] < min_cells || area[lo] < min_cells) continue;    // specks: step 2
+    if (b_hi - heights.floor_z_m < kRestMinClearance_m) continue;  // stands on the floor
+    if (b_hi < b_lo - tol || b_hi > med[lo] + tol) continue;       // not on the lower piece
+    int a = fragments_find(parent, hi), b = fragments_find(parent, lo);
     if (a == b) continue;
     if (a > b) std::swap(a, b);
     parent[b] = a;

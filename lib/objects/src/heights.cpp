@@ -59,6 +59,29 @@ bool line_of_sight(const cloud::VoxelGrid& g, const Eigen::Vector3d& scanner,
   return true;
 }
 
+bool lintel_above(const cloud::VoxelGrid& g, int col, int row, std::int64_t floor_layer,
+                  std::int64_t ceiling_layer, std::int64_t min_gap, std::int64_t min_run) {
+  std::int64_t last = floor_layer, run_start = -1;  // last occupied layer below the run
+  for (std::int64_t z = std::max<std::int64_t>(0, floor_layer + 2); z < g.nz; ++z) {
+    if (!g.count(col, row, z)) {
+      if (run_start >= 0) {
+        if (z - run_start >= min_run && z - 1 >= ceiling_layer - 2) return true;
+        last = z - 1;
+        run_start = -1;
+      }
+      continue;
+    }
+    if (run_start < 0) {
+      if (z - last - 1 < min_gap) {  // no opening below: part of the run below
+        last = z;
+        continue;
+      }
+      run_start = z;
+    }
+  }
+  return run_start >= 0 && g.nz - run_start >= min_run;  // up to the grid's top
+}
+
 ColumnScan scan_columns(const Grid<Cell>& layout, const cloud::VoxelGrid& voxels,
                         const cloud::LayerAnalysis& layers, const ObjectParams& params,
                         Grid<std::uint8_t>& mask) {

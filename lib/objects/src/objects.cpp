@@ -95,10 +95,14 @@ struct Acc {
   std::int64_t bottom = std::numeric_limits<std::int64_t>::max(), top = -1;
   bool touches_wall = false;
   std::vector<std::int64_t> tops;  // per cell with data
+  std::int64_t lintel = 0;         // cells with data under a lintel (lintel_above)
 };
 
 // Per label: its cells, bounding box, voxel range and whether it touches a wall.
-std::vector<Acc> accumulate(const Labels& lab, const Grid<Column>& cols, const Grid<Cell>& layout) {
+std::vector<Acc> accumulate(const Labels& lab, const Grid<Column>& cols, const Grid<Cell>& layout,
+                            const cloud::VoxelGrid& voxels, const cloud::LayerAnalysis& layers) {
+  const auto gap = static_cast<std::int64_t>(std::ceil(voxels.to_cells(kOpeningMinGap_m) - 1e-9));
+  const auto run = static_cast<std::int64_t>(std::ceil(voxels.to_cells(kLintelMin_m) - 1e-9));
   const int w = layout.width, h = layout.height;
   std::vector<Acc> acc(static_cast<std::size_t>(lab.count) + 1);
   for (int r = 0; r < h; ++r)
@@ -114,6 +118,7 @@ std::vector<Acc> accumulate(const Labels& lab, const Grid<Column>& cols, const G
         a.bottom = std::min(a.bottom, col.bottom);
         a.top = std::max(a.top, col.top);
         a.tops.push_back(col.top);
+        a.lintel += lintel_above(voxels, c, r, layers.floor_layer, layers.ceiling_layer, gap, run);
       }
       for (int dr = -1; dr <= 1 && !a.touches_wall; ++dr)
         for (int dc = -1; dc <= 1; ++dc)
@@ -123,6 +128,18 @@ std::vector<Acc> accumulate(const Labels& lab, const Grid<Column>& cols, const G
           }
     }
   return acc;
+}
+
+// The wall under a window (its parapet), which the layout calls furniture when the window spans
+// the wall band: it touches the wall, and a lintel (lintel_above) stands over at least half its
+// length and over at least a fifth of its seen cells. The lintel is the wall's inner face, one or
+// two rows of cells, so a parapet (the wall's thickness, 0.2-0.3 m deep) has a fifth or more of
+// its cells under it, a desk, cabinet or shelf under a window (0.3 m deep or more, in front of the
+// face) less.
+bool under_lintel(const Acc& a) {
+  const int length_cells = std::max(a.hi.col - a.lo.col, a.hi.row - a.lo.row) + 1;
+  return a.touches_wall && 2 * a.lintel >= length_cells &&
+         5 * a.lintel >= static_cast<std::int64_t>(a.tops.size());
 }
 
 // The labels of at least min_area_m2 become objects, numbered in raster order; res.labels holds
@@ -138,6 +155,7 @@ void list_objects(const std::vector<Acc>& acc, const Labels& lab, const GridGeom
     const Acc& a = acc[id];
     if (a.cells * cell_area < params.min_area_m2) continue;
     if (static_cast<double>(a.tops.size()) * cell_area < params.min_seen_area_m2) continue;
+    if (under_lintel(a)) continue;
     FurnitureObject o;
     o.id = static_cast<int>(res.objects.size()) + 1;
     new_id[id] = o.id;
@@ -208,9 +226,13 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
   // with data so that they join the object they fill.
   const ColumnScan scan = scan_columns(layout, voxels, layers, params, mask);
   const Grid<float> top = fill_tops(geo, voxels, scan, scanners_map, mask);
-  const Labels lab = join_fragments(label_objects(mask, top, geo, params, scan.any_data), top,
+  PieceHeights heights{top, Grid<float>(w, h, kNoHeight), layers.floor_z_m, voxels.cell_m};
+  for (std::size_t i = 0; i < mask.size(); ++i)
+    if (mask.data[i] && scan.cols.data[i].bottom >= 0)
+      heights.bottom.data[i] = static_cast<float>(voxels.layer_bottom_m(scan.cols.data[i].bottom));
+  const Labels lab = join_fragments(label_objects(mask, top, geo, params, scan.any_data), heights,
                                     geo.cell_m(), params);
-  const std::vector<Acc> acc = accumulate(lab, scan.cols, layout);
+  const std::vector<Acc> acc = accumulate(lab, scan.cols, layout, voxels, layers);
   list_objects(acc, lab, geo, voxels, layers, params, res);
   res.left_over_pieces = lab.count - static_cast<std::int64_t>(res.objects.size());
   for (std::size_t i = 0; i < layout.size(); ++i)

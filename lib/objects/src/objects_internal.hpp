@@ -37,6 +37,16 @@ bool floor_seen(const cloud::VoxelGrid& g, int col, int row, std::int64_t floor_
 bool line_of_sight(const cloud::VoxelGrid& g, const Eigen::Vector3d& scanner,
                    const Eigen::Vector3d& target, double skip_end_m);
 
+// A window's lintel over a furniture cell (furniture-extract.md, step 4): above the cell's lowest
+// occupied run (or the floor), an empty gap of at least min_gap layers (the opening), then a run
+// of at least min_run consecutive occupied layers that reaches the ceiling (ceiling_layer - 2)
+// or the grid's top. A lamp is too thin and hangs clear of the ceiling; a wall's face over a
+// cabinet has no opening below it.
+bool lintel_above(const cloud::VoxelGrid& g, int col, int row, std::int64_t floor_layer,
+                  std::int64_t ceiling_layer, std::int64_t min_gap, std::int64_t min_run);
+constexpr double kOpeningMinGap_m = 0.3;  // a window is taller (the simulator's: 1.2 m or more)
+constexpr double kLintelMin_m = 0.3;      // a lamp (0.06 m) and the ceiling's smear are thinner
+
 /// Column extents of the furniture cells (scan_columns); cells whose floor is seen and nothing
 /// stands on leave the mask.
 struct ColumnScan {
@@ -56,11 +66,26 @@ Grid<float> fill_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
                       const ColumnScan& scan, const std::vector<Eigen::Vector3d>& scanners_map,
                       Grid<std::uint8_t>& mask);
 
+/// The heights of the furniture cells that join_fragments compares (map frame, metres).
+struct PieceHeights {
+  Grid<float> top;     ///< each cell's top (filled in for cells without data); NaN = unknown
+  Grid<float> bottom;  ///< the lowest occupied layer's bottom of the cell's own column; NaN = none
+  double floor_z_m = 0.0;
+  double layer_m = 0.05;  ///< the voxels' height: the tolerance of "rests on"
+};
+
+/// A piece whose median bottom is at least this far above the floor does not stand on the floor
+/// by itself (a chair's seat is 0.4 m up, a table's underside 0.7 m; a leg or a box on the floor
+/// starts two layers, 0.1 m, above the floor layer's centre).
+constexpr double kRestMinClearance_m = 0.15;
+
 /// Joins the fragments of one piece of furniture (fragments.cpp): labels at most
-/// params.join_gap_m apart whose median tops (`top`, NaN = unknown) differ by at most
-/// params.split_height_step_m become one; a set still below params.min_area_m2 then joins the
-/// largest set within the gap. Labels may come out in several parts; numbered in raster order.
-Labels join_fragments(const Labels& in, const Grid<float>& top, double cell_m,
+/// params.join_gap_m apart whose median tops differ by at most params.split_height_step_m become
+/// one; so does a label resting on another (its median bottom at least kRestMinClearance_m above
+/// the floor and within the other's median bottom - 1 layer .. median top + 1 layer); a set
+/// still below params.min_area_m2 then joins the largest set within the gap. Labels may come out
+/// in several parts; numbered in raster order.
+Labels join_fragments(const Labels& in, const PieceHeights& heights, double cell_m,
                       const ObjectParams& params);
 
 OrientedBox min_area_box(const std::vector<Eigen::Vector2d>& pts);
