@@ -91,8 +91,8 @@ TEST(LaserToMap, WritesEveryOutputOfAGeneratedRoom) {
     auto r = run_app("laser-to-map", log.string() + " --method " + method + " -o " + out.string());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.err.find("consistency"), std::string::npos) << r.err;
-    for (const char* f : {"map.pgm", "map.yaml", "map.png", "laser_map.json", "summary.json",
-                          "report.html"})
+    for (const char* f :
+         {"map.pgm", "map.yaml", "map.png", "laser_map.json", "summary.json", "report.html"})
       EXPECT_TRUE(fs::exists(out / f)) << f;
     const json lm = read_json(out / "laser_map.json");
     EXPECT_EQ(lm["method"], method);
