@@ -90,6 +90,55 @@ TEST(Level, DisabledAndDegenerateInputsLeaveCloudAlone) {
   EXPECT_NE(r.note.find("no near-horizontal"), std::string::npos);
 }
 
+// A 16-beam lidar (rows 2 degrees apart over -15..+15) 1.4 m up in a 4 x 5 m room of 2.8 m:
+// its lowest row meets the floor 5.2 m away, so every return lies on a wall. Its near-horizontal
+// rows cross the walls along curves that planes fit within the inlier band; such planes have
+// the walls' other rows beyond them and are no floor or ceiling.
+TEST(Level, APlaneThatCutsThroughWallsIsNoFloor) {
+  const Eigen::Vector3d s(1.7, 2.3, 1.4);
+  const Eigen::Matrix3d R = tilt(1.0, {1.0, 0.3, 0.0});
+  std::vector<Eigen::Vector3f> pts;
+  for (int row = -15; row <= 15; row += 2)
+    for (double az = 0; az < 360.0; az += 0.2) {
+      const double e = row * M_PI / 180.0, a = az * M_PI / 180.0;
+      const Eigen::Vector3d d(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
+      double t = std::numeric_limits<double>::max();
+      for (int k = 0; k < 3; ++k) {
+        const double lo[3] = {0.0, 0.0, 0.0}, hi[3] = {4.0, 5.0, 2.8};
+        if (d[k] > 1e-9) t = std::min(t, (hi[k] - s[k]) / d[k]);
+        if (d[k] < -1e-9) t = std::min(t, (lo[k] - s[k]) / d[k]);
+      }
+      pts.emplace_back((R * (s + t * d)).cast<float>());
+    }
+  const LevelResult r = estimate_level(pts, {}, {R * s});
+  EXPECT_FALSE(r.levelled) << r.note;
+  EXPECT_EQ(r.tilt_deg, 0.0);
+  int cut = 0, unseen = 0;
+  for (const auto& w : r.warnings) {
+    cut += w.find("cuts through walls") != std::string::npos;
+    unseen += w.find("floor is nearly all unseen") != std::string::npos;
+  }
+  EXPECT_GE(cut, 1) << r.note;
+  EXPECT_EQ(unseen, 1);
+  // The same room seen down to the floor (rows to -60 degrees): levelled by its floor.
+  for (int row = -59; row < -15; row += 2)
+    for (double az = 0; az < 360.0; az += 0.2) {
+      const double e = row * M_PI / 180.0, a = az * M_PI / 180.0;
+      const Eigen::Vector3d d(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
+      double t = -s.z() / d.z();
+      for (int k = 0; k < 2; ++k) {
+        const double hi[2] = {4.0, 5.0};
+        if (d[k] > 1e-9) t = std::min(t, (hi[k] - s[k]) / d[k]);
+        if (d[k] < -1e-9) t = std::min(t, -s[k] / d[k]);
+      }
+      pts.emplace_back((R * (s + t * d)).cast<float>());
+    }
+  const LevelResult full = estimate_level(pts, {}, {R * s});
+  EXPECT_TRUE(full.levelled) << full.note;
+  EXPECT_TRUE(full.floor.found);
+  EXPECT_NEAR(full.tilt_deg, 1.0, 0.1);
+}
+
 TEST(Level, FloorOnlyWhenNoCeiling) {
   auto pts = box_room(6.0, 5.0, 2.5, 0.05, 0.002, /*with_ceiling=*/false);
   const Eigen::Matrix3d R = tilt(2.0, {0.0, 1.0, 0.0});

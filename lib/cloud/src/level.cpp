@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <tuple>
 
 #include "indoormap/core/errors.hpp"
 #include "level_internal.hpp"
@@ -15,6 +16,11 @@ namespace indoormap::cloud {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// A floor (ceiling) plane with more than this share of its points over others below (above)
+// it is refused: a real one has none there but for noise and what is seen through openings
+// (0.0 on the simulated scenes and the office), the planes that cut walls 0.18-0.72.
+constexpr double kMaxBeyondShare = 0.1;
+
 double deg2rad(double d) {
   return d * kPi / 180.0;
 }
@@ -221,6 +227,21 @@ LevelResult estimate_level(const std::vector<Eigen::Vector3f>& points, const Lev
   // A ceiling must lie well above the floor; with a flat cloud both bands are the same points.
   if (z_ceiling - z_floor > 2.0 * params.band_m)
     r.ceiling = fit_horizontal_plane(high, params, rng);
+
+  // A plane with points beyond it cuts through walls: no floor or ceiling (a 16-beam lidar in a
+  // small room, whose lowest row, 15 degrees down, meets the floor only 4-6 m away: its rows
+  // cross the walls along curves that planes fit within the inlier band).
+  for (auto [plane, name, side] :
+       {std::tuple{&r.floor, "floor", -1.0}, std::tuple{&r.ceiling, "ceiling", 1.0}}) {
+    if (!plane->found) continue;
+    const double share = detail::beyond_share(sample, *plane, params.inlier_m, side);
+    if (share <= kMaxBeyondShare) continue;
+    plane->found = false;
+    r.warnings.push_back(std::string("the ") + name + " plane found has " +
+                         detail::level_percent(share) + " of its points over other points " +
+                         (side < 0 ? "below" : "above") +
+                         " it: it cuts through walls, not used for levelling");
+  }
 
   Eigen::Vector3d up;
   if (r.floor.found && r.ceiling.found) {

@@ -3,7 +3,9 @@
 // of the room tilts with that side's unevenness and the scanner's own errors; it is refused.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "indoormap/cloud/level.hpp"
@@ -16,6 +18,8 @@ namespace {
 constexpr int kLevelSupportBins = 36;         // 10 degree sectors round a scanner
 constexpr double kLevelSupportCell_m = 0.25;  // area grid of the floor support
 constexpr double kLevelSupportMinRange_m = 0.3;
+constexpr double kBeyondCell_m = 0.1;  // columns of beyond_share
+constexpr double kBeyondGap_m = 0.3;   // beyond the inlier band and the range noise
 
 // Share of the kLevelSupportBins sectors round `centre` (xy) that hold at least one point of
 // `pts` beyond kLevelSupportMinRange_m.
@@ -64,6 +68,30 @@ double level_cell_area_m2(const std::vector<Eigen::Vector3d>& pts, bool dense_on
 }
 
 }  // namespace
+
+double detail::beyond_share(const std::vector<Eigen::Vector3d>& sample, const PlaneFit& plane,
+                            double inlier_m, double side) {
+  if (!plane.found) return 0.0;
+  // Per kBeyondCell_m column, the farthest signed distance beyond the plane on `side`.
+  std::unordered_map<std::int64_t, double> farthest;
+  auto key = [](const Eigen::Vector3d& q) {
+    const auto cx = static_cast<std::int64_t>(std::floor(q.x() / kBeyondCell_m));
+    const auto cy = static_cast<std::int64_t>(std::floor(q.y() / kBeyondCell_m));
+    return cx * 4'000'037 + cy;
+  };
+  for (const auto& q : sample) {
+    const double d = side * (plane.normal.dot(q) - plane.offset_m);
+    auto [it, fresh] = farthest.try_emplace(key(q), d);
+    if (!fresh) it->second = std::max(it->second, d);
+  }
+  std::size_t inliers = 0, beyond = 0;
+  for (const auto& q : sample) {
+    if (std::abs(plane.normal.dot(q) - plane.offset_m) > inlier_m) continue;
+    ++inliers;
+    beyond += farthest[key(q)] > kBeyondGap_m;
+  }
+  return inliers ? static_cast<double>(beyond) / static_cast<double>(inliers) : 0.0;
+}
 
 LevelSupport level_support(const std::vector<Eigen::Vector3d>& sample, const PlaneFit& plane,
                            double inlier_m, const std::vector<Eigen::Vector3d>& scanners) {
