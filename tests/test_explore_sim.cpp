@@ -13,9 +13,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* const kOutputs[] = {"map.pgm",           "map.yaml",    "path.geojson",
-                                "explore.json",      "explore.png", "explore_strip.png",
-                                "report.html",       "summary.json"};
+const char* const kOutputs[] = {"map.pgm",     "map.yaml",          "path.geojson", "explore.json",
+                                "explore.png", "explore_strip.png", "report.html",  "summary.json"};
 
 /// A 6 x 4 m room at 0.05 m per pixel (binary PGM, north up): walls 2 px thick, a 1 x 0.6 m
 /// table in the east half and a short wall stub from the north wall, so that the robot must move.

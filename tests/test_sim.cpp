@@ -41,7 +41,8 @@ Scene box_room() {
   return s;
 }
 
-Furniture make(FurnitureType type, Eigen::Vector2d c, Eigen::Vector2d size, double height, std::string id = "") {
+Furniture make(FurnitureType type, Eigen::Vector2d c, Eigen::Vector2d size, double height,
+               std::string id = "") {
   Furniture f;
   f.id = std::move(id);
   f.type = type;
@@ -59,7 +60,8 @@ std::optional<RayCaster::Hit> cast(const Scene& scene, Eigen::Vector3d o, Eigen:
 
 bool point_in_solid(const Solid& s, const Eigen::Vector3d& p, double shrink) {
   if (p.z() <= s.z0_m + shrink || p.z() >= s.z1_m - shrink) return false;
-  if (s.shape == Solid::Shape::kCylinder) return (p.head<2>() - s.center_m).norm() < s.radius_m - shrink;
+  if (s.shape == Solid::Shape::kCylinder)
+    return (p.head<2>() - s.center_m).norm() < s.radius_m - shrink;
   const auto& F = s.footprint;
   for (std::size_t k = 0; k < F.size(); ++k) {
     const Eigen::Vector2d e = F[(k + 1) % F.size()] - F[k];
@@ -71,7 +73,8 @@ bool point_in_solid(const Solid& s, const Eigen::Vector3d& p, double shrink) {
 
 }  // namespace
 
-// ---- Ray casting on hand-checkable scenes ---------------------------------------------------------
+// ---- Ray casting on hand-checkable scenes
+// ---------------------------------------------------------
 
 TEST(SimRayCast, HitsWallsFloorAndCeilingAtKnownRanges) {
   const Scene s = box_room();
@@ -146,8 +149,8 @@ TEST(SimRayCast, TableIsATopOnLegsSoRaysPassBelowIt) {
 TEST(SimRayCast, DoorLeadsIntoTheCorridorAndWindowsLetRaysOut) {
   Scene s = box_room();
   Room& r = s.rooms[0];
-  r.doors.push_back({0, 2.0, 1.0, 0.0, 2.0});         // south wall, x in [1.5, 2.5]
-  r.windows.push_back({2, 2.0, 1.0, 1.0, 2.0});       // north edge (4,3)->(0,3): x in [1.5, 2.5]
+  r.doors.push_back({0, 2.0, 1.0, 0.0, 2.0});    // south wall, x in [1.5, 2.5]
+  r.windows.push_back({2, 2.0, 1.0, 1.0, 2.0});  // north edge (4,3)->(0,3): x in [1.5, 2.5]
   Room corridor;
   corridor.name = "corridor";
   corridor.kind = RoomKind::kCorridor;
@@ -213,15 +216,16 @@ TEST(SimScanner, TiltRotatesPointsAndScannerAboutTheOrigin) {
   // Every point, rotated back, lies on a surface of the box room.
   for (std::size_t i = 0; i < r.points.size(); i += 7) {
     const Eigen::Vector3d p = R.transpose() * r.points[i].cast<double>();
-    const double d = std::min({std::abs(p.x()), std::abs(p.x() - 4), std::abs(p.y()), std::abs(p.y() - 3),
-                               std::abs(p.z()), std::abs(p.z() - 2.5)});
+    const double d = std::min({std::abs(p.x()), std::abs(p.x() - 4), std::abs(p.y()),
+                               std::abs(p.y() - 3), std::abs(p.z()), std::abs(p.z() - 2.5)});
     ASSERT_LT(d, 1e-4) << "point " << i << " = " << p.transpose();
   }
   // The scanner's own frame is the tilted one: its horizontal ray at azimuth 0 is level there.
   bool found = false;
   const Eigen::Vector3f sp = r.scanner_positions_m[0].cast<float>();
   for (const auto& p : r.points)
-    if (std::abs(p.z() - sp.z()) < 1e-5f && std::abs(p.y() - sp.y()) < 1e-5f && p.x() > sp.x()) found = true;
+    if (std::abs(p.z() - sp.z()) < 1e-5f && std::abs(p.y() - sp.y()) < 1e-5f && p.x() > sp.x())
+      found = true;
   EXPECT_TRUE(found);
 }
 
@@ -240,7 +244,8 @@ TEST(SimScanner, NoPointInsideASolidOfTheOffice) {
     const Eigen::Vector3d p = r.points[i].cast<double>();
     ASSERT_GT(p.z(), -1e-4);
     for (std::size_t k = 0; k < g.solids.size(); ++k)
-      ASSERT_FALSE(point_in_solid(g.solids[k], p, 1e-4)) << "point " << p.transpose() << " inside solid " << k;
+      ASSERT_FALSE(point_in_solid(g.solids[k], p, 1e-4))
+          << "point " << p.transpose() << " inside solid " << k;
   }
 }
 
@@ -254,7 +259,8 @@ TEST(SimScanner, NoiseMixedPixelsAndRangeLimits) {
   const SimResult r = simulate(s);
   EXPECT_GT(r.mixed_pixels, 0u);
   EXPECT_LT(r.mixed_pixels, r.points.size() / 10);
-  for (const auto& p : r.points) ASSERT_LE((p.cast<double>() - s.scanners[0].position_m).norm(), 2.2 + 1e-6);
+  for (const auto& p : r.points)
+    ASSERT_LE((p.cast<double>() - s.scanners[0].position_m).norm(), 2.2 + 1e-6);
   EXPECT_LT(r.points.size(), r.rays);  // the far corners are out of range
 }
 
@@ -281,10 +287,13 @@ TEST(SimScanner, DeterministicForAFixedSeed) {
   s.scanner.azimuth_step_deg = s.scanner.elevation_step_deg = 0.5;
   const SimResult a = simulate(s), b = simulate(s);
   ASSERT_EQ(a.points.size(), b.points.size());
-  EXPECT_EQ(std::memcmp(a.points.data(), b.points.data(), a.points.size() * sizeof(Eigen::Vector3f)), 0);
+  EXPECT_EQ(
+      std::memcmp(a.points.data(), b.points.data(), a.points.size() * sizeof(Eigen::Vector3f)), 0);
   s.seed = 6;  // another noise seed, same scene
   const SimResult c = simulate(s);
-  EXPECT_NE(std::memcmp(a.points.data(), c.points.data(), std::min(a.points.size(), c.points.size()) * 12), 0);
+  EXPECT_NE(std::memcmp(a.points.data(), c.points.data(),
+                        std::min(a.points.size(), c.points.size()) * 12),
+            0);
 }
 
 TEST(SimScanner, RefusesScenesAboveTheRayBudget) {
@@ -295,7 +304,8 @@ TEST(SimScanner, RefusesScenesAboveTheRayBudget) {
   EXPECT_THROW(simulate(s, o), BudgetError);
 }
 
-// ---- Scenes -----------------------------------------------------------------------------------------
+// ---- Scenes
+// -----------------------------------------------------------------------------------------
 
 TEST(SimScene, CheckFindsBrokenScenes) {
   Scene s = box_room();
@@ -313,7 +323,8 @@ TEST(SimScene, CheckFindsBrokenScenes) {
   ASSERT_FALSE(p.empty());
   EXPECT_EQ(p[0].key, "scanners[0].position");
   s = box_room();
-  s.furniture.push_back(make(FurnitureType::kCabinet, {1, 1}, {0.5, 0.5}, 3.0));  // above the ceiling
+  s.furniture.push_back(
+      make(FurnitureType::kCabinet, {1, 1}, {0.5, 0.5}, 3.0));  // above the ceiling
   EXPECT_FALSE(check_scene(s).empty());
 }
 
@@ -341,16 +352,19 @@ TEST(SimScene, RandomScenesAreValidAndReproducible) {
     p.rooms = 1 + static_cast<int>(seed % 6);
     const Scene s = random_scene(seed, p);
     const auto problems = check_scene(s);
-    EXPECT_TRUE(problems.empty()) << "seed " << seed << ": " << problems.front().key << ": " << problems.front().problem;
+    EXPECT_TRUE(problems.empty()) << "seed " << seed << ": " << problems.front().key << ": "
+                                  << problems.front().problem;
     EXPECT_EQ(s.rooms.size(), static_cast<std::size_t>(p.rooms + 1));
     const Scene t = random_scene(seed, p);
     ASSERT_EQ(s.furniture.size(), t.furniture.size());
-    for (std::size_t i = 0; i < s.furniture.size(); ++i) EXPECT_EQ(s.furniture[i].center_m, t.furniture[i].center_m);
+    for (std::size_t i = 0; i < s.furniture.size(); ++i)
+      EXPECT_EQ(s.furniture[i].center_m, t.furniture[i].center_m);
   }
   EXPECT_THROW(random_scene(1, {.rooms = 0}), UsageError);
 }
 
-// ---- Ground truth -----------------------------------------------------------------------------------
+// ---- Ground truth
+// -----------------------------------------------------------------------------------
 
 TEST(SimTruth, LayoutMatchesTheScene) {
   Scene s = box_room();
@@ -386,4 +400,5 @@ TEST(SimTruth, LayoutMatchesTheScene) {
   EXPECT_NEAR(items[2].z_max_m, 2.5 - 0.5, 1e-12);
 }
 
-// ---- Files: PCD, 3DTK, the app -------------------------------------------------------------------------
+// ---- Files: PCD, 3DTK, the app
+// -------------------------------------------------------------------------

@@ -22,7 +22,7 @@ namespace indoormap::sim {
 /// [bottom_m, top_m] in height (a door has bottom_m = 0).
 struct Opening {
   int edge = 0;
-  double at_m = 0.0;      ///< distance of the opening's centre from the edge's first vertex
+  double at_m = 0.0;  ///< distance of the opening's centre from the edge's first vertex
   double width_m = 0.9;
   double bottom_m = 0.0;  ///< window sill height; 0 for doors
   double top_m = 2.1;
@@ -41,7 +41,7 @@ enum class RoomKind { kRoom, kCorridor };
 struct Room {
   std::string name;
   RoomKind kind = RoomKind::kRoom;
-  Polygon polygon;  ///< inner wall faces, scene frame, metres; either orientation
+  Polygon polygon;                ///< inner wall faces, scene frame, metres; either orientation
   double wall_thickness_m = 0.2;  ///< walls are the polygon's boundary extruded outward
   Ceiling ceiling;
   std::vector<Opening> doors;
@@ -66,7 +66,7 @@ struct Furniture {
   Eigen::Vector2d size_m = Eigen::Vector2d(1.0, 0.5);
   double radius_m = 0.0;
   double yaw_deg = 0.0;
-  double height_m = 0.0;       ///< top above the floor; 0: the type's default (pillar: ceiling)
+  double height_m = 0.0;        ///< top above the floor; 0: the type's default (pillar: ceiling)
   double seat_height_m = 0.45;  ///< chair
   double drop_m = 0.5;          ///< lamp: gap between ceiling and lamp top
   double thickness_m = 0.0;     ///< table / desk top, lamp body; 0: type default

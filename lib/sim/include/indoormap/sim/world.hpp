@@ -22,7 +22,7 @@ struct Solid {
   Shape shape = Shape::kPrism;
   Polygon footprint;  ///< prism: convex, counter-clockwise; cylinder: its 32-gon (for pictures)
   Eigen::Vector2d center_m = Eigen::Vector2d::Zero();  ///< cylinder
-  double radius_m = 0.0;                                ///< cylinder
+  double radius_m = 0.0;                               ///< cylinder
   double z0_m = 0.0, z1_m = 0.0;
   int furniture = -1;  ///< index into Scene::furniture; -1 for a wall piece
   int room = -1;       ///< wall piece: the room whose edge it extrudes
@@ -39,8 +39,8 @@ struct Cap {
 };
 
 struct SceneGeometry {
-  std::vector<Solid> solids;  ///< wall pieces first, then furniture parts
-  std::vector<Cap> caps;      ///< room floors / ceilings, then door floors
+  std::vector<Solid> solids;         ///< wall pieces first, then furniture parts
+  std::vector<Cap> caps;             ///< room floors / ceilings, then door floors
   std::vector<Polygon> door_floors;  ///< footprints cut out of walls by doors (free space)
 };
 
@@ -77,7 +77,7 @@ class RayCaster {
     std::uint8_t n = 0;     // prism edge count
     int index = 0;          // solid or cap index
     double z0 = 0, z1 = 0;
-    double cx = 0, cy = 0, r = 0;  // cylinder
+    double cx = 0, cy = 0, r = 0;                // cylinder
     double nx[8] = {}, ny[8] = {}, off[8] = {};  // prism half-planes nx*x + ny*y <= off
   };
   double intersect(const Prim& p, const Eigen::Vector3d& o, const Eigen::Vector3d& d) const;
