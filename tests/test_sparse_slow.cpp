@@ -116,5 +116,14 @@ TEST(Sparse, SixteenBeamLidarGivesAMapWithFreeSpaceNearTheRays) {
     if (e.is_null()) continue;
     EXPECT_LE(far_share(e, "map"), kSixteenBeamFarCeil) << "seed " << seed;
     EXPECT_LE(far_share(e, "layout"), kSixteenBeamFarCeil) << "seed " << seed;
+    // No return lies on the floor: no plane through the walls levels the cloud, and the run
+    // says the floor is unseen (docs/evaluation.md, "16-beam lidar: planes through walls").
+    const json s = json::parse(
+        indoormap::test::read_text(dir / ("res_" + std::to_string(seed)) / "summary.json"));
+    EXPECT_FALSE(s["levelling"]["levelled"].get<bool>()) << "seed " << seed;
+    int unseen = 0;
+    for (const auto& w : s["warnings"])
+      unseen += w.get<std::string>().find("floor is nearly all unseen") != std::string::npos;
+    EXPECT_EQ(unseen, 1) << "seed " << seed;
   }
 }

@@ -129,7 +129,9 @@ bool level_supported(const std::vector<Eigen::Vector3d>& sample, const LevelPara
       r.floor.found && s.cloud_area_m2 > 0 ? s.plane_area_m2 / s.cloud_area_m2 : 0.0;
   if (floor_share < p.warn_floor_share)
     r.warnings.push_back("the floor is nearly all unseen: floor points cover " +
-                         level_percent(floor_share) + " of the cloud's area");
+                         level_percent(floor_share) +
+                         " of the cloud's area; the floor height found may be wrong (give "
+                         "layers.floor_z_m if known)");
   if (!plane.found) return false;
   const std::string tilt = std::to_string(r.tilt_deg).substr(0, 4) + " deg";
   if (r.tilt_deg > p.max_tilt_deg) {
