@@ -406,9 +406,23 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
     throw Error("build_layout: seen map differs in size");
   if (params.wall_max_thickness_m > 0) {
     const Grid<std::uint8_t> inside = wall_inside(walls, geo.cell_m(), params.wall_max_thickness_m);
-    for (std::size_t i = 0; i < walls.size(); ++i)
-      walls.data[i] |=
+    Grid<std::uint8_t> cand(w, h, 0);
+    for (std::size_t i = 0; i < cand.size(); ++i)
+      cand.data[i] =
           inside.data[i] && r.passage.data[i] && !free_mask.data[i] && !(seen && seen->data[i]);
+    // A pillar's inside is left as it is: the objects step describes a pillar by its ring of
+    // faces. Its inside spans at most 2 * wall_max_thickness_m along both axes; a wall's is longer.
+    cv::Mat lab, st, cen;
+    const int n = cv::connectedComponentsWithStats(as_mat(cand), lab, st, cen, 8, CV_32S);
+    const int max_cells =
+        static_cast<int>(std::lround(2.0 * params.wall_max_thickness_m / geo.cell_m()));
+    for (int row = 0; row < h; ++row)
+      for (int col = 0; col < w; ++col) {
+        const int k = lab.at<int>(row, col);
+        if (k > 0 && std::max(st.at<int>(k, cv::CC_STAT_WIDTH), st.at<int>(k, cv::CC_STAT_HEIGHT)) >
+                         max_cells)
+          walls.at(col, row) = 1;
+      }
   }
 
   // Furniture: furniture-band obstacles inside the passage area, plus small unreachable pockets

@@ -49,7 +49,8 @@ struct LayoutParams {
   /// diagonal is wall (else the strip became furniture: the walls between rooms listed as
   /// objects). Furniture stands in front of a wall, with free floor, not a second wall, on its
   /// other side; a doorway is wider and the flood reaches it; the floor of a room's corner (cut
-  /// off by a diagonal) is seen. 0: off.
+  /// off by a diagonal) is seen. An inside no longer than twice this along both grid axes is
+  /// left as it is: a pillar's, which the objects step describes by its ring of faces. 0: off.
   double wall_max_thickness_m = 0.5;
   /// Free space needs evidence (issue 17, sparse scans): the flood runs only over cells where
   /// the scan shows free space (build_layout's `evidence`: the navigation map's free cells, whose
