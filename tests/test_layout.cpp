@@ -378,6 +378,9 @@ TEST(LayoutParams, ValidatedByBuildLayoutAndMakeMap) {
   MapParams mp;
   mp.layout.hanging_gap_m = 0;
   EXPECT_THROW(make_map(PointCloud{}, mp), UsageError);
+  LayoutParams thick;
+  thick.wall_max_thickness_m = -1;
+  EXPECT_THROW(build_layout(g, g, geo_for(g), {}, thick), UsageError);
 }
 
 namespace {
