@@ -53,6 +53,10 @@ TEST(CloudParams, EachStructNamesItsKey) {
   ly.wall_min_extent_m = ly.wall_band_m + 0.1;
   EXPECT_EQ(usage_error([&] { validate(ly); }),
             "invalid parameter layers.wall_min_extent_m: must be in [0, layers.wall_band_m]");
+  LayerParams low;
+  low.low_wall_band_m = -0.1;
+  EXPECT_EQ(usage_error([&] { validate(low); }),
+            "invalid parameter layers.low_wall_band_m: must be in [0, 1]");
   LevelParams lv;
   lv.max_tilt_deg = 90;
   EXPECT_EQ(usage_error([&] { validate(lv); }),

@@ -135,6 +135,34 @@ TEST(Layout, RoomWithFurnitureAndScanner) {
   EXPECT_EQ(r.seeds[0], (CellIndex{9, 3}));
 }
 
+// Issue 16: two rooms with a wall 0.4 m thick between them (faces seen, inside not) and a
+// pillar in one room, 0.1 m cells. The wall's inside becomes wall; the pillar's inside (0.2 m)
+// is left as it is (unknown); with wall_max_thickness_m 0 the wall's inside stays unknown.
+TEST(Layout, InsideOfAWallBetweenRoomsIsWallAPillarsIsLeft) {
+  std::vector<std::string> rows(14, "#..........#..#........#");
+  rows.front() = rows.back() = std::string(24, '#');
+  for (int r = 5; r <= 8; ++r) rows[r].replace(3, 4, r == 5 || r == 8 ? "####" : "#..#");
+  const auto walls = parse(rows);
+  const Grid<std::uint8_t> furn(walls.width, walls.height, 0);
+  const GridGeometry geo({0.0, 0.0}, 0.1, walls.width, walls.height);
+  const std::vector<Eigen::Vector2d> scanners{{0.85, 0.25}, {1.85, 0.65}};
+  LayoutParams on;
+  ASSERT_EQ(on.wall_max_thickness_m, 0.5);  // the default
+  const LayoutResult r = build_layout(walls, furn, geo, scanners, on);
+  for (int row = 1; row <= 12; ++row)
+    for (int col = 12; col <= 13; ++col)
+      EXPECT_EQ(r.layout.at(col, row), Cell::kWall) << col << "," << row;
+  for (int row = 6; row <= 7; ++row)  // grid rows of the pillar's inside (picture rows 6-7)
+    for (int col = 4; col <= 5; ++col) EXPECT_NE(r.layout.at(col, row), Cell::kWall);
+  EXPECT_EQ(r.layout.at(8, 2), Cell::kFree);
+  EXPECT_EQ(r.layout.at(18, 6), Cell::kFree);
+  LayoutParams off;
+  off.wall_max_thickness_m = 0.0;
+  const LayoutResult o = build_layout(walls, furn, geo, scanners, off);
+  for (int row = 1; row <= 12; ++row)
+    for (int col = 12; col <= 13; ++col) EXPECT_EQ(o.layout.at(col, row), Cell::kUnknown);
+}
+
 TEST(Layout, ClosingJoinsFragmentsAndPocketsBehindObjectsAreFurniture) {
   auto walls = parse({
       "###########",
@@ -350,6 +378,9 @@ TEST(LayoutParams, ValidatedByBuildLayoutAndMakeMap) {
   MapParams mp;
   mp.layout.hanging_gap_m = 0;
   EXPECT_THROW(make_map(PointCloud{}, mp), UsageError);
+  LayoutParams thick;
+  thick.wall_max_thickness_m = -1;
+  EXPECT_THROW(build_layout(g, g, geo_for(g), {}, thick), UsageError);
 }
 
 namespace {

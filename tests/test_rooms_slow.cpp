@@ -77,6 +77,41 @@ TEST(RoomsApp, FourRoomsAndACorridorEachItsOwnRoomWithItsDoor) {
   EXPECT_EQ(summary["rooms"]["count"], 5);
 }
 
+// The walls between rooms are wall, not furniture (issue 16): the 4-room building's rooms have
+// ceilings from 2.48 to 3.18 m, so the storey's wall band (under the highest ceiling) misses the
+// walls of the low rooms, and the unseen inside of every inner wall lay inside the passage area;
+// both became furniture strips. With the low wall band (layers.low_wall_band_m) and the inside of
+// the walls (layout.wall_max_thickness_m) at most one object's centre lies in no truth room (in a
+// wall); with both off, 6 did. Measured at 0.5 degree steps (2026-12-03): on 16 objects,
+// recall 0.91, precision 0.69, 1 outside; off 25 objects, 0.82 / 0.40, 6 outside. Issue 16's
+// target (precision 0.9) is not reached: docs/evaluation.md "Rooms of a floor" says what is left.
+TEST(RoomsApp, InnerWallsAreNotFurniture) {
+  const fs::path in = rooms_building(141, 1);
+  const fs::path out = indoormap::test::scratch_dir();
+  const json e = rooms_map_and_eval(in / "3dtk", in / "ground_truth.json", out);
+  ASSERT_EQ(e["objects"]["status"], "ok");
+  EXPECT_LE(e["rooms"]["objects_outside_rooms"].get<int>(), 1);
+  EXPECT_GE(e["objects"]["recall"].get<double>(), 0.9);
+  EXPECT_GE(e["objects"]["precision"].get<double>(), 0.65);
+  const json summary = rooms_read_json(out / "summary.json");
+  EXPECT_GE(summary["low_wall_band"]["lo_m"].get<double>(), 2.0);  // above the furniture band
+
+  // The same scan with both rules off: the walls come back as objects.
+  const fs::path cfg = out / "rules_off.yaml";
+  std::ofstream(cfg) << "layers:\n  low_wall_band_m: 0\nlayout:\n  wall_max_thickness_m: 0\n";
+  const fs::path off = out / "off";
+  const auto a = run_app("pcd-to-map",
+                         (in / "3dtk").string() + " -c " + cfg.string() + " -q -o " + off.string());
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  const auto m =
+      run_app("map-eval", "--truth " + (in / "ground_truth.json").string() + " --result " +
+                              off.string() + " -o " + (off / "eval").string());
+  ASSERT_EQ(m.exit_code, 0) << m.err;
+  const json eo = rooms_read_json(off / "eval" / "eval.json");
+  EXPECT_GE(eo["rooms"]["objects_outside_rooms"].get<int>(), 4);
+  EXPECT_LT(eo["objects"]["precision"].get<double>(), e["objects"]["precision"].get<double>());
+}
+
 TEST(RoomsApp, TwoStoreysEachWithItsRooms) {
   const fs::path in = rooms_building(142, 2);
   const fs::path out = indoormap::test::scratch_dir();

@@ -75,6 +75,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("layers", "wall_band_m", ly.wall_band_m);
   f("layers", "wall_min_extent_m", ly.wall_min_extent_m);
   f("layers", "furniture_max_height_m", ly.furniture_max_height_m);
+  f("layers", "low_wall_band_m", ly.low_wall_band_m);
   f("layers", "floor_z_m", ly.floor_z_m);
   f("layers", "ceiling_z_m", ly.ceiling_z_m);
   f("layers", "wall_band_lo_m", ly.wall_band_lo_m);
@@ -89,6 +90,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("layout", "seed_search_radius_m", lo.seed_search_radius_m);
   f("layout", "hanging_max_area_m2", lo.hanging_max_area_m2);
   f("layout", "hanging_max_extent_m", lo.hanging_max_extent_m);
+  f("layout", "wall_max_thickness_m", lo.wall_max_thickness_m);
   f("layout", "hanging_gap_m", lo.hanging_gap_m);
   f("layout", "free_needs_evidence", lo.free_needs_evidence);
   f("layout", "sparse_floor_fill", lo.sparse_floor_fill);

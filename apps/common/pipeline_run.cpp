@@ -327,6 +327,7 @@ json summary_json(const std::string& program, const PipelineRun& run, const Pipe
       {"ceiling_sloped", m.layers.ceiling_sloped},
       {"room_height_m", m.layers.ceiling_z_m - m.layers.floor_z_m},
       {"wall_band", band_json(m.layers.wall_band)},
+      {"low_wall_band", band_json(m.layers.low_wall_band)},
       {"furniture_band", band_json(m.layers.furniture_band)},
       {"layers", layers},
       {"scanners_map_m", scanners},

@@ -71,6 +71,8 @@ void validate(const LayerParams& ly) {
   require(ly.wall_min_extent_m >= 0 && ly.wall_min_extent_m <= ly.wall_band_m,
           "layers.wall_min_extent_m: must be in [0, layers.wall_band_m]");
   require(ly.furniture_max_height_m > 0, "layers.furniture_max_height_m: must be > 0");
+  require(ly.low_wall_band_m >= 0 && ly.low_wall_band_m <= 1,
+          "layers.low_wall_band_m: must be in [0, 1]");
   require(ly.surface_block_m >= 0 && ly.surface_block_m <= 2,
           "layers.surface_block_m: must be in [0, 2]");
   require(ly.ceiling_onset_factor > 1, "layers.ceiling_onset_factor: must be > 1");
@@ -342,6 +344,8 @@ LayerAnalysis analyse_layers(const VoxelGrid& g, const LayerParams& p) {
       p.furniture_band_hi_m.value_or(std::min(wall_lo, a.floor_z_m + p.furniture_max_height_m));
   a.wall_band = make_band(g, wall_lo, wall_hi);
   a.furniture_band = make_band(g, furn_lo, furn_hi);
+  const double low_lo = furn_hi + g.cell_m, low_hi = low_lo + p.low_wall_band_m;
+  if (p.low_wall_band_m > 0 && low_hi <= wall_lo) a.low_wall_band = make_band(g, low_lo, low_hi);
   return a;
 }
 

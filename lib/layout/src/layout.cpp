@@ -122,6 +122,35 @@ Grid<std::uint8_t> hanging_mask(const Grid<std::uint8_t>& walls, const Grid<std:
 
 }  // namespace
 
+Grid<std::uint8_t> wall_inside(const Grid<std::uint8_t>& walls, double cell_m, double max_span_m) {
+  const int w = walls.width, h = walls.height;
+  const int dirs[4][2] = {{1, 0}, {0, 1}, {1, 1}, {-1, 1}};
+  constexpr int kFar = 1 << 20;
+  Grid<std::uint8_t> out(w, h, 0);
+  Grid<int> before(w, h, kFar), after(w, h, kFar);  // steps to the nearest wall cell
+  for (const auto& d : dirs) {
+    const int dc = d[0], dr = d[1];
+    const double step_m = cell_m * std::hypot(dc, dr);
+    for (int r = 0; r < h; ++r)
+      for (int c = 0; c < w; ++c)
+        before.at(c, r) = walls.at(c, r) ? 0
+                          : before.contains(c - dc, r - dr)
+                              ? std::min(kFar, before.at(c - dc, r - dr) + 1)
+                              : kFar;
+    for (int r = h - 1; r >= 0; --r)
+      for (int c = w - 1; c >= 0; --c)
+        after.at(c, r) = walls.at(c, r) ? 0
+                         : after.contains(c + dc, r + dr)
+                             ? std::min(kFar, after.at(c + dc, r + dr) + 1)
+                             : kFar;
+    for (std::size_t i = 0; i < out.size(); ++i)
+      if (!walls.data[i] && before.data[i] < kFar && after.data[i] < kFar &&
+          (before.data[i] + after.data[i]) * step_m <= max_span_m + 1e-9)
+        out.data[i] = 1;
+  }
+  return out;
+}
+
 Grid<std::uint8_t> passage_area(const Grid<std::uint8_t>& walls, int min_lines) {
   const int w = walls.width, h = walls.height;
   // Per line direction: an obstacle at or before the cell along the line, and at or after it.
@@ -164,6 +193,8 @@ void validate(const LayoutParams& lo) {
   require(lo.seed_search_radius_m >= 0, "layout.seed_search_radius_m: must be >= 0");
   require(lo.hanging_max_area_m2 >= 0, "layout.hanging_max_area_m2: must be >= 0");
   require(lo.hanging_gap_m > 0, "layout.hanging_gap_m: must be > 0");
+  require(lo.wall_max_thickness_m >= 0 && lo.wall_max_thickness_m <= 2,
+          "layout.wall_max_thickness_m: must be in [0, 2]");
   require(lo.hanging_max_extent_m >= 0, "layout.hanging_max_extent_m: must be >= 0");
 }
 
@@ -304,7 +335,7 @@ void classify(const Grid<std::uint8_t>& walls, const Grid<std::uint8_t>& furn,
 LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::uint8_t>& furniture,
                           const GridGeometry& geo, const std::vector<Eigen::Vector2d>& scanners_map,
                           const LayoutParams& params, const Grid<std::uint8_t>* support,
-                          const Grid<std::uint8_t>* evidence) {
+                          const Grid<std::uint8_t>* evidence, const Grid<std::uint8_t>* seen) {
   if (walls_in.width != furniture.width || walls_in.height != furniture.height ||
       walls_in.width != geo.width() || walls_in.height != geo.height())
     throw Error("build_layout: wall map, furniture map and geometry differ in size");
@@ -371,6 +402,28 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
 
   place_seeds(floodable, geo, scanners_map, params, r);
   const Grid<std::uint8_t> free_mask = flood_free(floodable, r.seeds);
+  if (seen && (seen->width != w || seen->height != h))
+    throw Error("build_layout: seen map differs in size");
+  if (params.wall_max_thickness_m > 0) {
+    const Grid<std::uint8_t> inside = wall_inside(walls, geo.cell_m(), params.wall_max_thickness_m);
+    Grid<std::uint8_t> cand(w, h, 0);
+    for (std::size_t i = 0; i < cand.size(); ++i)
+      cand.data[i] =
+          inside.data[i] && r.passage.data[i] && !free_mask.data[i] && !(seen && seen->data[i]);
+    // A pillar's inside is left as it is: the objects step describes a pillar by its ring of
+    // faces. Its inside spans at most 2 * wall_max_thickness_m along both axes; a wall's is longer.
+    cv::Mat lab, st, cen;
+    const int n = cv::connectedComponentsWithStats(as_mat(cand), lab, st, cen, 8, CV_32S);
+    const int max_cells =
+        static_cast<int>(std::lround(2.0 * params.wall_max_thickness_m / geo.cell_m()));
+    for (int row = 0; row < h; ++row)
+      for (int col = 0; col < w; ++col) {
+        const int k = lab.at<int>(row, col);
+        if (k > 0 && std::max(st.at<int>(k, cv::CC_STAT_WIDTH), st.at<int>(k, cv::CC_STAT_HEIGHT)) >
+                         max_cells)
+          walls.at(col, row) = 1;
+      }
+  }
 
   // Furniture: furniture-band obstacles inside the passage area, plus small unreachable pockets
   // that touch them (behind and between objects).

@@ -139,6 +139,14 @@ void map_voxelized(PointCloud cloud, const MapParams& params, MapResult& r) {
   r.walls = cloud::project_band(
       r.voxels, r.layers.wall_band, lp.min_points_per_voxel, lp.isolated_min_points,
       std::max(1, static_cast<int>(std::lround(r.voxels.to_cells(lp.wall_min_extent_m)))));
+  // The walls of a room lower than the storey's ceiling stand through the low wall band.
+  const cloud::HeightBand& lb = r.layers.low_wall_band;
+  if (lb.hi_layer >= lb.lo_layer) {
+    const auto low =
+        cloud::project_band(r.voxels, lb, lp.min_points_per_voxel, lp.isolated_min_points,
+                            static_cast<int>(lb.hi_layer - lb.lo_layer + 1));
+    for (std::size_t i = 0; i < low.size(); ++i) r.walls.data[i] |= low.data[i];
+  }
   r.furniture = cloud::project_band(r.voxels, r.layers.furniture_band, lp.min_points_per_voxel,
                                     lp.isolated_min_points);
   // The slice just below the wall band tells hanging objects (lamps) from walls and pillars.
@@ -173,7 +181,7 @@ void map_voxelized(PointCloud cloud, const MapParams& params, MapResult& r) {
     evidence.data[i] = r.nav.map.data[i] == Cell::kFree;
   const bool sparse = r.floor_fill < params.layout.sparse_floor_fill;
   r.layout = build_layout(r.walls, r.furniture, r.geometry, seeds, params.layout, &support,
-                          sparse ? &evidence : nullptr);
+                          sparse ? &evidence : nullptr, &evidence);
   for (const auto& w : r.layout.warnings) r.warnings.push_back(w);
   r.timings.push_back({"layout", sw.lap_ms()});
   r.cloud_map = std::move(cloud);

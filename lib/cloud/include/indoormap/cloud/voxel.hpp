@@ -71,6 +71,13 @@ struct LayerParams {
   /// thin horizontal slab. 0: any point in the band makes a wall (the paper).
   double wall_min_extent_m = 0.2;
   double furniture_max_height_m = 2.0;  ///< the furniture band ends here (above the floor) at most
+  /// Walls of rooms lower than the storey's ceiling: the wall band lies under the ceiling that
+  /// analyse_layers finds (the highest strong one), above the ceiling of a lower room of the same
+  /// storey, so that room's walls, which end at its own ceiling, miss the band. A wall still stands
+  /// through every height of its room; furniture ends below furniture_max_height_m. So a column
+  /// occupied through the whole of this height just above the furniture band is wall as well
+  /// (LayerAnalysis::low_wall_band). 0: off (the paper's single band).
+  double low_wall_band_m = 0.2;
   // Overrides (map-frame heights, metres); unset means "detect".
   std::optional<double> floor_z_m;
   std::optional<double> ceiling_z_m;
@@ -97,6 +104,9 @@ struct LayerAnalysis {
   std::int64_t ceiling_layer = 0;
   double ceiling_z_m = 0.0;
   HeightBand wall_band;
+  /// From one cell above the furniture band, low_wall_band_m high (LayerParams::low_wall_band_m);
+  /// empty when it does not end below the wall band.
+  HeightBand low_wall_band;
   HeightBand furniture_band;
   std::vector<std::string> warnings;
 };

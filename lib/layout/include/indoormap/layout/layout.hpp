@@ -42,6 +42,16 @@ struct LayoutParams {
   double hanging_max_area_m2 = 2.0;
   double hanging_max_extent_m = 1.5;  ///< longer components are walls seen above an occlusion
   double hanging_gap_m = 0.3;         ///< thickness of the support slice below the wall band
+  /// The inside of an inner wall (issue 16): a scanner sees a wall's two faces from the two
+  /// rooms, never what lies between them, and in a building that strip lies inside the passage
+  /// area. A cell the flood did not reach, whose floor the scan did not see (build_layout's
+  /// `seen`), that lies between two wall cells at most this far apart along a row, column or
+  /// diagonal is wall (else the strip became furniture: the walls between rooms listed as
+  /// objects). Furniture stands in front of a wall, with free floor, not a second wall, on its
+  /// other side; a doorway is wider and the flood reaches it; the floor of a room's corner (cut
+  /// off by a diagonal) is seen. An inside no longer than twice this along both grid axes is
+  /// left as it is: a pillar's, which the objects step describes by its ring of faces. 0: off.
+  double wall_max_thickness_m = 0.5;
   /// Free space needs evidence (issue 17, sparse scans): the flood runs only over cells where
   /// the scan shows free space (build_layout's `evidence`: the navigation map's free cells, whose
   /// floor was observed or which a ray from a scanner crossed), closed once with a 3x3 square so
@@ -73,6 +83,10 @@ struct HangingObject {
 /// are inside. Values: 0 outside, 1 inside.
 Grid<std::uint8_t> passage_area(const Grid<std::uint8_t>& walls, int min_lines = 0);
 
+/// Cells between two wall cells at most max_span_m apart (centre to centre) along a row, column
+/// or diagonal, the wall cells excluded (LayoutParams::wall_max_thickness_m). Values: 0 / 1.
+Grid<std::uint8_t> wall_inside(const Grid<std::uint8_t>& walls, double cell_m, double max_span_m);
+
 struct LayoutResult {
   Grid<Cell> layout;                   ///< M_r
   Grid<std::uint8_t> passage;          ///< step 4 result (1 = inside)
@@ -91,11 +105,15 @@ struct LayoutResult {
 /// or a pillar continues there, a lamp does not); when null, the furniture map stands in for it.
 /// evidence: cells the scan shows free (1; see LayoutParams::free_needs_evidence); when null,
 /// or with free_needs_evidence false, every passage cell may be flooded.
+/// seen: cells the scan shows free (the same map as evidence, given for every scan): a cell whose
+/// floor was seen is never the inside of a wall (LayoutParams::wall_max_thickness_m); when null,
+/// no cell is known seen.
 LayoutResult build_layout(const Grid<std::uint8_t>& walls, const Grid<std::uint8_t>& furniture,
                           const GridGeometry& geometry,
                           const std::vector<Eigen::Vector2d>& scanners_map,
                           const LayoutParams& params = {},
                           const Grid<std::uint8_t>* support = nullptr,
-                          const Grid<std::uint8_t>* evidence = nullptr);
+                          const Grid<std::uint8_t>* evidence = nullptr,
+                          const Grid<std::uint8_t>* seen = nullptr);
 
 }  // namespace indoormap::layout
