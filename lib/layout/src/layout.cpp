@@ -413,7 +413,7 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
     // A pillar's inside is left as it is: the objects step describes a pillar by its ring of
     // faces. Its inside spans at most 2 * wall_max_thickness_m along both axes; a wall's is longer.
     cv::Mat lab, st, cen;
-    const int n = cv::connectedComponentsWithStats(as_mat(cand), lab, st, cen, 8, CV_32S);
+    cv::connectedComponentsWithStats(as_mat(cand), lab, st, cen, 8, CV_32S);
     const int max_cells =
         static_cast<int>(std::lround(2.0 * params.wall_max_thickness_m / geo.cell_m()));
     for (int row = 0; row < h; ++row)
