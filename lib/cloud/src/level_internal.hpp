@@ -13,14 +13,14 @@ namespace indoormap::cloud::detail {
 bool level_supported(const std::vector<Eigen::Vector3d>& sample, const LevelParams& p,
                      const std::vector<Eigen::Vector3d>& scanners, LevelResult& r);
 
+/// "12 %".
+std::string level_percent(double share);
+
 // The share of `plane`'s inliers among `sample` whose 0.1 m column holds a point of `sample`
 // more than 0.3 m beyond the plane on `side` (+1: above, -1: below; 0 when the plane is not
 // found). Nothing lies below a floor or above a ceiling; a plane that cuts through walls (the
 // rows of a 16-beam lidar crossing the walls near the horizon fit planes within the inlier band)
 // has the walls' other points beyond it.
-/// "12 %".
-std::string level_percent(double share);
-
 double beyond_share(const std::vector<Eigen::Vector3d>& sample, const PlaneFit& plane,
                     double inlier_m, double side);
 
