@@ -50,9 +50,11 @@ std::string room_xyz() {
 
 fs::path room_file() {
   static const fs::path p = [] {
+    // One file per process: ctest runs each test in its own process, in parallel, and a file
+    // shared between them would be read while another process rewrites it.
     auto dir = fs::temp_directory_path() / "indoormap-tests" / "shared";
     fs::create_directories(dir);
-    auto f = dir / "room.xyz";
+    auto f = dir / ("room_" + std::to_string(::getpid()) + ".xyz");
     test::write_text(f, room_xyz());
     return f;
   }();
