@@ -6,6 +6,8 @@
 #include <limits>
 #include <vector>
 
+#include "indoormap/core/errors.hpp"
+
 namespace indoormap::layout {
 
 NearestOriginResult assign_nearest_origins(PointCloud& cloud) {
@@ -89,6 +91,52 @@ NearestOriginResult assign_nearest_origins(PointCloud& cloud) {
   r.applied = true;
   r.spans = cloud.origins.size();
   r.lookup_cell_m = cell;
+  return r;
+}
+
+}  // namespace indoormap::layout
+
+namespace indoormap::layout {
+
+void validate(const ViewpointCheckParams& p) {
+  if (p.samples < 1) throw UsageError("invalid parameter viewpoint_check.samples: must be >= 1");
+  if (!(p.end_margin_m >= 0.0 && std::isfinite(p.end_margin_m)))
+    throw UsageError("invalid parameter viewpoint_check.end_margin_m: must be >= 0");
+  if (p.min_points < 1)
+    throw UsageError("invalid parameter viewpoint_check.min_points: must be >= 1");
+  if (!(p.max_occluded_share >= 0.0 && p.max_occluded_share <= 1.0))
+    throw UsageError("invalid parameter viewpoint_check.max_occluded_share: must be in [0, 1]");
+}
+
+ViewpointCheck check_viewpoint(const cloud::VoxelGrid& g, const std::vector<Eigen::Vector3f>& points,
+                               const Eigen::Vector3d& scanner, const ViewpointCheckParams& p) {
+  ViewpointCheck r;
+  if (points.empty() || g.voxel_count() == 0) return r;
+  const Eigen::Vector3d s = g.to_voxel_coords(scanner);
+  if (!s.allFinite()) return r;
+  const std::size_t stride = std::max<std::size_t>(1, points.size() / p.samples);
+  const double margin = g.to_cells(p.end_margin_m);
+  for (std::size_t i = 0; i < points.size(); i += stride) {
+    const Eigen::Vector3d e = g.to_voxel_coords(points[i].cast<double>());
+    const Eigen::Vector3d d = e - s;
+    const double len = d.norm();
+    if (!(len > margin + 1.0)) continue;
+    ++r.sampled;
+    const auto end_layer = static_cast<std::int64_t>(std::floor(e.z()));
+    const Eigen::Vector3d step = d / len * 0.5;  // half-voxel steps
+    const auto n = static_cast<std::int64_t>((len - margin) / 0.5);
+    for (std::int64_t k = 2; k < n; ++k) {
+      const Eigen::Vector3d q = s + step * static_cast<double>(k);
+      const auto x = static_cast<std::int64_t>(std::floor(q.x()));
+      const auto y = static_cast<std::int64_t>(std::floor(q.y()));
+      const auto z = static_cast<std::int64_t>(std::floor(q.z()));
+      if (!g.contains(x, y, z) || std::abs(z - end_layer) < 2) continue;
+      if (g.count(x, y, z) >= p.min_points) {
+        ++r.occluded;
+        break;
+      }
+    }
+  }
   return r;
 }
 

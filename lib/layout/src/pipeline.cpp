@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <span>
 
 #include "indoormap/layout/nearest_origin.hpp"
@@ -59,6 +60,25 @@ void run_ghost_filter(PointCloud& cloud, const cloud::GhostParams& params, MapRe
                        " scanner positions and the origin of some points unknown");
 }
 
+// A single position with no origin spans is taken as the origin of every point (rays, ghost
+// filter). A mobile scanner's merged cloud has one VIEWPOINT (the first pose, or nothing
+// meaningful): most of its points lie behind walls from there. Then the position is dropped and
+// the run says so: free space from the observed floor alone, no ghost filter from a wrong origin.
+void drop_implausible_viewpoint(PointCloud& cloud, const ViewpointCheckParams& p, MapResult& r) {
+  if (!p.enabled || cloud.scanners.size() != 1) return;
+  const ViewpointCheck c = check_viewpoint(r.voxels, cloud.points, cloud.scanners[0], p);
+  r.viewpoint_occluded_share = c.share();
+  if (c.sampled == 0 || c.share() <= p.max_occluded_share) return;
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.0f%%", 100.0 * c.share());
+  r.warnings.push_back(std::string("the one scanner position (VIEWPOINT) cannot be the origin of "
+                                   "the cloud: ") +
+                       buf +
+                       " of sampled points lie behind occupied voxels from it; position dropped "
+                       "(no rays, no ghost filter; give --trajectory for a mobile scan)");
+  cloud.scanners.clear();
+}
+
 // The share of the cells of the floor's 0.2 m blocks (4 x 4 cells of 5 cm) that hold floor
 // points (the floor layer and its neighbours): 0.74-0.85 at the default 0.25 degree step,
 // 0.4-0.5 at 1 degree, about 0.2 at 2 degrees.
@@ -91,6 +111,7 @@ void validate(const MapParams& params) {
   cloud::validate(params.layers);
   validate(params.layout);
   validate(params.nav);
+  validate(params.viewpoint_check);
 }
 
 cloud::LevelResult level_cloud(PointCloud& cloud, const MapParams& params,
@@ -127,6 +148,7 @@ MapResult make_map(PointCloud cloud, const MapParams& params) {
 
 void map_voxelized(PointCloud cloud, const MapParams& params, MapResult& r) {
   Stopwatch sw;
+  drop_implausible_viewpoint(cloud, params.viewpoint_check, r);
   run_ghost_filter(cloud, params.ghosts, r);
   if (r.ghosts.applied) r.timings.push_back({"ghosts", sw.lap_ms()});
 

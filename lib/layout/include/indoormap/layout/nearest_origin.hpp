@@ -4,6 +4,7 @@
 // docs/pipeline.md, "Ghost filter per origin".
 #include <cstddef>
 
+#include "indoormap/cloud/voxel.hpp"
 #include "indoormap/core/cloud.hpp"
 
 namespace indoormap::layout {
@@ -24,5 +25,36 @@ struct NearestOriginResult {
 /// voxel holds more points than a ghost may. Does nothing with fewer than 2 positions, no points,
 /// or more than 65535 positions.
 NearestOriginResult assign_nearest_origins(PointCloud& cloud);
+
+}  // namespace indoormap::layout
+
+namespace indoormap::layout {
+
+/// Whether one scanner position can be the origin of a whole cloud (a PCD's VIEWPOINT is; a
+/// mobile scanner's merged cloud's is not: it is one position of the trajectory, or nothing).
+struct ViewpointCheckParams {
+  bool enabled = true;
+  std::size_t samples = 20000;  ///< points sampled (evenly over the cloud)
+  /// Occupied voxels nearer than this to a point do not block it (grazing floor, its own surface).
+  double end_margin_m = 0.3;
+  int min_points = 2;  ///< a voxel with this many points blocks a ray
+  /// More than this share of the sampled points behind an occupied voxel: not the origin.
+  double max_occluded_share = 0.15;
+};
+
+/// Throws UsageError naming the key (viewpoint_check.*) for a parameter out of its range.
+void validate(const ViewpointCheckParams& p);
+
+struct ViewpointCheck {
+  std::size_t sampled = 0;
+  std::size_t occluded = 0;  ///< sampled points whose ray from the position crosses an occupied voxel
+  double share() const { return sampled ? static_cast<double>(occluded) / sampled : 0.0; }
+};
+
+/// Casts rays from `scanner` (map frame) to a sample of the points through the voxel grid and
+/// counts those that pass an occupied voxel (min_points) more than end_margin_m before their end
+/// and 2 or more layers from it: a point the position could not have seen.
+ViewpointCheck check_viewpoint(const cloud::VoxelGrid& g, const std::vector<Eigen::Vector3f>& points,
+                               const Eigen::Vector3d& scanner, const ViewpointCheckParams& p);
 
 }  // namespace indoormap::layout

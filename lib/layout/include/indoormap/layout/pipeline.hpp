@@ -12,6 +12,7 @@
 #include "indoormap/core/cloud.hpp"
 #include "indoormap/layout/layout.hpp"
 #include "indoormap/layout/nav_map.hpp"
+#include "indoormap/layout/nearest_origin.hpp"
 
 namespace indoormap::layout {
 
@@ -23,6 +24,7 @@ struct MapParams {
   cloud::LayerParams layers;
   LayoutParams layout;
   NavParams nav;  ///< the navigation map (robot.min_obstacle_height_m, robot.height_m, nav.*)
+  ViewpointCheckParams viewpoint_check;  ///< one position that cannot be the cloud's origin
 };
 
 struct StageTime {
@@ -42,6 +44,7 @@ struct MapResult {
   Grid<std::uint8_t> furniture;  ///< M_f: occupancy of the furniture band
   LayoutResult layout;           ///< M_r and the passage area
   NavResult nav;                 ///< the robot's map (map.pgm): body band, evidence
+  double viewpoint_occluded_share = 0.0;  ///< check_viewpoint of a single position (0: not run)
   double floor_fill = 1.0;       ///< floor points / cells of their 0.2 m blocks (sparse scans: low)
   std::vector<StageTime> timings;
   std::vector<std::string> warnings;  ///< from every stage, in order
