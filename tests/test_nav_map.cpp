@@ -76,6 +76,72 @@ TEST(NavMap, BodyBandSpecksAndDoorUnderLintel) {
   EXPECT_GT(rays.cells_ray_free, 0);
 }
 
+// The veil of mixed pixels in a doorway when no ghost filter ran: columns of three points at
+// unrelated heights, none two within a layer, over a floor that was seen through them. Each
+// would pass the speck rule alone (three layers); together, a scatter over seen floor, they are
+// no obstacle. A leg seen every other layer (a sparse multi-beam scan) stands alone and stays.
+TEST(NavMap, DoorwayVeilOverSeenFloorIsNoObstacle) {
+  auto g = room();
+  for (int y = 0; y < 20; ++y)
+    for (int x = 0; x < 40; ++x) put(g, x, y, 0);
+  for (int x = 5; x < 10; ++x)
+    for (int y = 8; y < 12; ++y) {
+      const int a = 1 + (x + 2 * y) % 3, b = a + 3 + x % 2;
+      for (int z : {a, b, b + 3}) put(g, x, y, z, 1);
+    }
+  for (int z : {1, 3, 5, 7, 9}) put(g, 30, 10, z, 1);  // the sparse leg
+  const NavResult r = build_nav_map(g, 0.05, {}, NavParams{});
+  for (int x = 5; x < 10; ++x)
+    for (int y = 8; y < 12; ++y) EXPECT_EQ(at(r, x, y), Cell::kFree) << x << "," << y;
+  EXPECT_EQ(at(r, 30, 10), Cell::kWall) << "a lone column of points is a leg";
+  EXPECT_EQ(r.specks_dropped, 20);
+}
+
+// Floor holes: a walled room (walls at x 0 and 39, y 0 and 19) with its floor seen but for a
+// ring gap (x 8-10, wall to wall across the room: two thirds of its border is free floor), a
+// scanner's blind disc (radius 3 cells round (30, 10)), a cabinet (occupied sides round an
+// unseen inside) and a shaft (no floor, points 1 m below it). The gap and the disc become free;
+// the cabinet's inside (bordered by occupied cells) and the shaft (a drop) stay unknown. Above
+// floor_hole_max_m2 a hole stays unknown.
+TEST(NavMap, FloorHolesBetweenRingsFilledCabinetAndShaftNot) {
+  cloud::VoxelGrid g = room();
+  g.origin_m = {0.0, 0.0,
+                -1.0};  // layer 10 holds z 0.0-0.1: the floor; the shaft's points lie below
+  const auto in_disc = [](int x, int y) { return (x - 30) * (x - 30) + (y - 10) * (y - 10) <= 9; };
+  const auto in_cabinet = [](int x, int y) { return x >= 15 && x <= 19 && y >= 3 && y <= 6; };
+  const auto in_shaft = [](int x, int y) { return x >= 23 && x <= 25 && y >= 13 && y <= 15; };
+  for (int y = 0; y < 20; ++y)
+    for (int x = 0; x < 40; ++x) {
+      if (x == 0 || x == 39 || y == 0 || y == 19) {
+        for (int z = 10; z < 25; ++z) put(g, x, y, z);  // the walls
+      } else if (in_cabinet(x, y)) {
+        if (x == 15 || x == 19 || y == 3 || y == 6)
+          for (int z = 11; z < 18; ++z) put(g, x, y, z);
+      } else if (in_shaft(x, y)) {
+        put(g, x, y, 0);  // the floor below
+      } else if ((x < 8 || x > 10) && !in_disc(x, y)) {
+        put(g, x, y, 10);
+      }
+    }
+  const NavResult r = build_nav_map(g, 0.05, {}, NavParams{});
+  EXPECT_EQ(at(r, 9, 1), Cell::kFree) << "the ring gap, by the wall";
+  EXPECT_EQ(at(r, 9, 10), Cell::kFree);
+  EXPECT_EQ(at(r, 30, 10), Cell::kFree) << "the blind disc";
+  EXPECT_EQ(at(r, 17, 4), Cell::kUnknown) << "inside the cabinet";
+  EXPECT_EQ(at(r, 24, 14), Cell::kUnknown) << "the shaft";
+  // The gap's 54 cells and the disc's 29 less its four tips, one-cell notches that the floor's
+  // 3 x 3 closing fills before.
+  EXPECT_EQ(r.cells_hole_filled, 3 * 18 + 29 - 4);
+  NavParams small;
+  small.floor_hole_max_m2 = 0.3;  // the disc (29 cells of 0.01 m2) fits, the gap (54) does not
+  const NavResult s = build_nav_map(g, 0.05, {}, small);
+  EXPECT_EQ(at(s, 9, 10), Cell::kUnknown);
+  EXPECT_EQ(at(s, 30, 10), Cell::kFree);
+  NavParams off;
+  off.floor_hole_max_m2 = 0;
+  EXPECT_EQ(build_nav_map(g, 0.05, {}, off).cells_hole_filled, 0);
+}
+
 // Two positions 10 m apart: each point goes to its nearest (the other is more than 1.5 m
 // farther), the points are reordered by origin, none lost. Positions 0.5 m apart: a point may
 // take any of those within 1.5 m of its nearest, never a farther one.
@@ -117,6 +183,35 @@ TEST(NearestOrigin, TerrestrialNearestTrajectoryAmongTheNear) {
   EXPECT_FALSE(assign_nearest_origins(one).applied) << "one position: nothing to estimate";
 }
 
+// A wall at x = 2.0 m between two rooms, points high on both far walls. From a position in the
+// left room half the points lie behind the wall: no origin of that cloud (a mobile scan's
+// VIEWPOINT). The left room's points alone are all visible. A point just beyond a voxel in its
+// own layer (grazing) is not counted hidden.
+TEST(ViewpointCheck, PointsBehindAWallAreHiddenFromTheOnePosition) {
+  auto g = room();
+  for (int y = 0; y < 20; ++y)
+    for (int z = 0; z < 30; ++z) put(g, 20, y, z);
+  std::vector<Eigen::Vector3f> left, both;
+  for (int y = 0; y < 20; ++y) {
+    left.emplace_back(0.15f, 0.05f + 0.1f * static_cast<float>(y), 2.55f);
+    both.push_back(left.back());
+    both.emplace_back(3.95f, 0.05f + 0.1f * static_cast<float>(y), 2.55f);
+  }
+  for (const auto& p : both)
+    put(g, static_cast<int>(p.x() / 0.1f), static_cast<int>(p.y() / 0.1f), 25);
+  const Eigen::Vector3d s{1.05, 1.05, 1.2};
+  ViewpointCheckParams p;
+  const ViewpointCheck all = check_viewpoint(g, both, s, p);
+  EXPECT_EQ(all.sampled, 40u);
+  EXPECT_EQ(all.occluded, 20u);
+  EXPECT_DOUBLE_EQ(all.share(), 0.5);
+  EXPECT_EQ(check_viewpoint(g, left, s, p).occluded, 0u);
+  const std::vector<Eigen::Vector3f> grazing{{3.95f, 1.05f, 1.25f}};  // the wall in the ray's layer
+  EXPECT_EQ(check_viewpoint(g, grazing, s, p).occluded, 0u);
+  p.max_occluded_share = 2;
+  EXPECT_THROW(validate(p), UsageError);
+}
+
 TEST(NavMap, ParametersAreValidated) {
   auto g = room();
   NavParams p;
@@ -124,6 +219,12 @@ TEST(NavMap, ParametersAreValidated) {
   EXPECT_THROW(build_nav_map(g, 0.0, {}, p), UsageError);
   p = {};
   p.min_neighbours = 9;
+  EXPECT_THROW(validate(p), UsageError);
+  p = {};
+  p.floor_hole_min_free_share = 1.5;
+  EXPECT_THROW(validate(p), UsageError);
+  p = {};
+  p.floor_hole_max_m2 = -1;
   EXPECT_THROW(validate(p), UsageError);
 }
 

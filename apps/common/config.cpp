@@ -62,6 +62,12 @@ void visit(PipelineConfig& c, F&& f) {
   f("ghosts", "far_end_m", gh.far_end_m);
   f("ghosts", "end_skip_m", gh.end_skip_m);
   f("ghosts", "max_rays", gh.max_rays);
+  auto& vc = c.map.viewpoint_check;
+  f("viewpoint_check", "enabled", vc.enabled);
+  f("viewpoint_check", "samples", vc.samples);
+  f("viewpoint_check", "end_margin_m", vc.end_margin_m);
+  f("viewpoint_check", "min_points", vc.min_points);
+  f("viewpoint_check", "max_occluded_share", vc.max_occluded_share);
   auto& ly = c.map.layers;
   f("layers", "min_points_per_voxel", ly.min_points_per_voxel);
   f("layers", "isolated_min_points", ly.isolated_min_points);
@@ -147,6 +153,8 @@ void visit(PipelineConfig& c, F&& f) {
   f("nav", "min_neighbours", nv.min_neighbours);
   f("nav", "floor_tolerance_m", nv.floor_tolerance_m);
   f("nav", "floor_closing_cells", nv.floor_closing_cells);
+  f("nav", "floor_hole_max_m2", nv.floor_hole_max_m2);
+  f("nav", "floor_hole_min_free_share", nv.floor_hole_min_free_share);
   f("nav", "floor_max_offset_m", nv.floor_max_offset_m);
   f("nav", "floor_tile_m", nv.floor_tile_m);
   f("nav", "rays", nv.rays);
@@ -237,6 +245,7 @@ void validate(const PipelineConfig& c) {
   cloud::validate(c.map.align_walls);  // align_walls.<key>
   cloud::validate(c.map.voxel);
   cloud::validate(c.map.ghosts);
+  layout::validate(c.map.viewpoint_check);  // viewpoint_check.<key>
   cloud::validate(c.map.layers);
   layout::validate(c.map.layout);  // throws UsageError naming layout.<key>
   layout::validate(c.map.nav);

@@ -162,7 +162,11 @@ PipelineRun map_loaded(cloud_io::LoadResult loaded, const PipelineCli& cli, Pipe
   try {
     const ProgressReporter ghost_bar("ghost filter", "voxels", cli.quiet);
     cfg.map.ghosts.progress = ghost_bar.fn();
+    // Only a position the file gives (one PCD's VIEWPOINT) is checked: a given one stands.
+    const bool check_viewpoint = cfg.map.viewpoint_check.enabled;
+    cfg.map.viewpoint_check.enabled = check_viewpoint && run.scanner_source == "file";
     auto maps = layout::make_storey_maps(std::move(loaded.cloud), cfg.map, cfg.storeys, cli.storey);
+    cfg.map.viewpoint_check.enabled = check_viewpoint;
     cfg.map.ghosts.progress = nullptr;
     ghost_bar.finish();
     run.storeys = maps.storeys;
@@ -334,6 +338,10 @@ json summary_json(const std::string& program, const PipelineRun& run, const Pipe
       {"scanner_source", run.scanner_source},
       {"flood_seeds_map_m", seeds},
       {"hanging_objects", hanging},
+      {"viewpoint_check",
+       {{"occluded_share",
+         m.viewpoint_occluded_share ? json(*m.viewpoint_occluded_share) : json(nullptr)},
+        {"position_dropped", m.viewpoint_dropped}}},
       {"ghosts",
        {{"applied", m.ghosts.applied},
         {"rays", m.ghosts.rays},
@@ -353,6 +361,7 @@ json summary_json(const std::string& program, const PipelineRun& run, const Pipe
           {"free", m.nav.cells_free},
           {"free_floor_seen", m.nav.cells_floor_seen},
           {"free_rays_only", m.nav.cells_ray_free},
+          {"free_floor_holes", m.nav.cells_hole_filled},
           {"unknown", m.nav.cells_unknown}}},
         {"specks_dropped", m.nav.specks_dropped}}},
       {"timings_ms", timings},

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <opencv2/imgproc.hpp>
 
+#include "floor_holes.hpp"
 #include "indoormap/core/errors.hpp"
 
 namespace indoormap::layout {
@@ -27,6 +28,10 @@ void validate(const NavParams& p) {
   require(std::isfinite(p.floor_max_offset_m) && p.floor_max_offset_m >= 0,
           "nav.floor_max_offset_m: must be >= 0");
   require(std::isfinite(p.floor_tile_m) && p.floor_tile_m > 0, "nav.floor_tile_m: must be > 0");
+  require(std::isfinite(p.floor_hole_max_m2) && p.floor_hole_max_m2 >= 0,
+          "nav.floor_hole_max_m2: must be >= 0");
+  require(p.floor_hole_min_free_share >= 0 && p.floor_hole_min_free_share <= 1,
+          "nav.floor_hole_min_free_share: must be in [0, 1]");
   require(std::isfinite(p.max_range_m) && p.max_range_m > 0, "nav.max_range_m: must be > 0");
   require(std::isfinite(p.scanner_clear_m) && p.scanner_clear_m >= 0,
           "nav.scanner_clear_m: must be >= 0");
@@ -39,7 +44,10 @@ namespace {
 struct Columns {
   std::vector<std::uint32_t> points;
   std::vector<std::int32_t> lo, hi;
-  std::vector<std::uint16_t> layers;  ///< body-band layers holding points
+  std::vector<std::uint16_t> layers;     ///< body-band layers holding points
+  std::vector<std::uint64_t> bits;       ///< those layers, bit (layer - body_lo) % 64
+  std::vector<std::uint16_t> top, pair;  ///< points in the column's highest layer; the most in
+                                         ///< two adjacent layers
   std::vector<std::uint8_t> floor_seen, low_seen;
 };
 
@@ -85,7 +93,9 @@ Columns scan_columns(const cloud::VoxelGrid& g, std::int64_t floor_lo, std::int6
   const std::size_t n = static_cast<std::size_t>(g.layer_size());
   Columns c{std::vector<std::uint32_t>(n, 0), std::vector<std::int32_t>(n, -1),
             std::vector<std::int32_t>(n, -1), std::vector<std::uint16_t>(n, 0),
-            std::vector<std::uint8_t>(n, 0),  std::vector<std::uint8_t>(n, 0)};
+            std::vector<std::uint64_t>(n, 0), std::vector<std::uint16_t>(n, 0),
+            std::vector<std::uint16_t>(n, 0), std::vector<std::uint8_t>(n, 0),
+            std::vector<std::uint8_t>(n, 0)};
   const auto [dmin, dmax] = std::minmax_element(off.begin(), off.end());
   const std::int64_t z0 = std::max<std::int64_t>(0, floor_lo + (n ? *dmin : 0));
   const std::int64_t z1 = std::min<std::int64_t>(g.nz - 1, body_hi + (n ? *dmax : 0));
@@ -101,13 +111,73 @@ Columns scan_columns(const cloud::VoxelGrid& g, std::int64_t floor_lo, std::int6
         c.floor_seen[i] = 1;
         continue;
       }
+      const auto below = static_cast<std::uint16_t>(c.hi[i] == zr - 1 ? c.top[i] : 0);
+      c.pair[i] = std::max(c.pair[i], static_cast<std::uint16_t>(std::min(65535, below + k)));
+      c.top[i] = k;
       c.points[i] += k;
       ++c.layers[i];
+      c.bits[i] |= std::uint64_t{1} << ((zr - body_lo) % 64);
       if (c.lo[i] < 0) c.lo[i] = static_cast<std::int32_t>(zr);
       c.hi[i] = static_cast<std::int32_t>(zr);
     }
   }
   return c;
+}
+
+// The body-band columns that are obstacles (docs/pipeline.md, "Specks"): at least min_points
+// points, or min_span layers, or part of a surface: min_neighbours of the 8 neighbours hold
+// body-band points. Where the floor below the column was seen, the neighbours must hold a point
+// within one layer of one of the column's own: a far table top or a wall row is level across
+// its cells, the veil of mixed pixels in a doorway (points at random heights over a floor seen
+// through them) is not.
+Grid<std::uint8_t> occupied_columns(const Columns& col, const std::vector<std::uint8_t>& floor,
+                                    int w, int h, const NavParams& p, std::int32_t min_span,
+                                    std::int64_t& specks) {
+  Grid<std::uint8_t> occupied(w, h, 0);
+  // A scatter column: the floor below was seen and no two of its points lie within one layer.
+  const auto scatter = [&](std::size_t i) {
+    return col.lo[i] >= 0 && floor[i] && col.pair[i] <= 1;
+  };
+  for (int row = 0; row < h; ++row)
+    for (int c = 0; c < w; ++c) {
+      const std::size_t i = static_cast<std::size_t>(row) * w + c;
+      if (col.lo[i] < 0) continue;
+      const std::uint64_t near = col.bits[i] | (col.bits[i] << 1) | (col.bits[i] >> 1);
+      int nb = 0, level = 0, scattered = 0;
+      for (int dr = -1; dr <= 1; ++dr)
+        for (int dc = -1; dc <= 1; ++dc) {
+          if ((!dr && !dc) || !occupied.contains(c + dc, row + dr)) continue;
+          const std::size_t j = static_cast<std::size_t>(row + dr) * w + c + dc;
+          const bool is_level = (col.bits[j] & near) != 0;
+          nb += col.lo[j] >= 0;
+          level += is_level;
+          // Two one-point columns at one height are a piece of a sparse surface, not scatter.
+          const bool one_level =
+              col.layers[i] == 1 && col.layers[j] == 1 && std::abs(col.lo[i] - col.lo[j]) <= 1;
+          scattered += scatter(j) && !one_level;
+        }
+      const bool surface = nb >= p.min_neighbours && (!floor[i] || level >= p.min_neighbours);
+      const bool veil = scatter(i) && scattered >= 2;
+      const bool ok = !veil && (col.points[i] >= static_cast<std::uint32_t>(p.min_points) ||
+                                col.layers[i] >= min_span || surface);
+      occupied.data[i] = ok;
+      specks += !ok;
+    }
+  return occupied;
+}
+
+// Columns holding a point more than kDropM below the floor: a hole in the floor (a stairwell, a
+// shaft) shows what lies below it; such a gap in the floor's returns is no floor hole to fill.
+constexpr double kDropM = 0.3;
+
+std::vector<std::uint8_t> drops(const cloud::VoxelGrid& g, double floor_z_m) {
+  std::vector<std::uint8_t> d(static_cast<std::size_t>(g.layer_size()), 0);
+  const std::int64_t top = std::min<std::int64_t>(g.nz, g.layer_of(floor_z_m - kDropM));
+  for (std::int64_t z = 0; z < top; ++z) {
+    const std::uint16_t* layer = g.counts.data() + g.index(0, 0, z);
+    for (std::size_t i = 0; i < d.size(); ++i) d[i] |= layer[i] != 0;
+  }
+  return d;
 }
 
 // 2D rays from one position: per azimuth bin, to the farthest low-seen column of the bin,
@@ -180,6 +250,7 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
   const GridGeometry geo = g.geometry2d();
   const int w = geo.width(), h = geo.height();
   r.map = Grid<Cell>(w, h, Cell::kUnknown);
+  r.observed_free = Grid<std::uint8_t>(w, h, 0);
   r.body_lo_m = floor_z_m + p.min_obstacle_height_m;
   r.body_hi_m = floor_z_m + p.height_m;
   if (w == 0 || h == 0 || g.nz == 0) return r;
@@ -194,35 +265,17 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
   const Columns col = scan_columns(g, floor_lo, body_lo, body_hi, off);
   const auto min_span =
       static_cast<std::int32_t>(std::max(1L, std::lround(g.to_cells(p.min_column_m))));
-  Grid<std::uint8_t> occupied(w, h, 0);
-  for (int row = 0; row < h; ++row)
-    for (int c = 0; c < w; ++c) {
-      const std::size_t i = static_cast<std::size_t>(row) * w + c;
-      if (col.lo[i] < 0) continue;
-      // Part of a surface: at least min_neighbours of the 8 neighbours hold body-band points.
-      int nb = 0;
-      for (int dr = -1; dr <= 1; ++dr)
-        for (int dc = -1; dc <= 1; ++dc)
-          if ((dr || dc) && occupied.contains(c + dc, row + dr) &&
-              col.lo[static_cast<std::size_t>(row + dr) * w + c + dc] >= 0)
-            ++nb;
-      const bool ok = col.points[i] >= static_cast<std::uint32_t>(p.min_points) ||
-                      col.layers[i] >= min_span || nb >= p.min_neighbours;
-      occupied.data[i] = ok;
-      r.specks_dropped += !ok;
-    }
   // Far from a scanner the floor's returns thin out into lines with gaps of a cell or two: close
-  // them (a square closing of floor_closing_cells), never across an occupied cell.
+  // them (a square closing of floor_closing_cells); occupied cells are taken out after.
   std::vector<std::uint8_t> floor_seen = col.floor_seen;
   if (p.floor_closing_cells > 0) {
-    Grid<std::uint8_t> f(w, h, 0);
-    f.data = floor_seen;
-    cv::Mat m(h, w, CV_8U, f.data.data());
+    cv::Mat m(h, w, CV_8U, floor_seen.data());
     const cv::Mat square = cv::getStructuringElement(cv::MORPH_RECT, {3, 3});
     cv::morphologyEx(m, m, cv::MORPH_CLOSE, square, {-1, -1}, p.floor_closing_cells);
-    for (std::size_t i = 0; i < floor_seen.size(); ++i)
-      floor_seen[i] = f.data[i] && !occupied.data[i];
   }
+  const Grid<std::uint8_t> occupied =
+      occupied_columns(col, floor_seen, w, h, p, min_span, r.specks_dropped);
+  for (std::size_t i = 0; i < floor_seen.size(); ++i) floor_seen[i] &= !occupied.data[i];
   std::vector<std::uint8_t> crossed(occupied.size(), 0);
   if (p.rays) {
     for (const auto& s : scanners) {
@@ -237,17 +290,28 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
     r.warnings.push_back(
         "no scanner position known: the navigation map's free space comes from the observed "
         "floor alone (give --scanner or --trajectory for ray evidence)");
-  for (std::size_t i = 0; i < occupied.size(); ++i) {
+  std::vector<detail::NavState> state(occupied.size(), detail::NavState::kUnknown);
+  for (std::size_t i = 0; i < state.size(); ++i)
+    state[i] = occupied.data[i]                ? detail::NavState::kOccupied
+               : (floor_seen[i] || crossed[i]) ? detail::NavState::kFree
+                                               : detail::NavState::kUnknown;
+  for (std::size_t i = 0; i < state.size(); ++i)
+    r.observed_free.data[i] = state[i] == detail::NavState::kFree;
+  const double cell_m2 = geo.cell_m() * geo.cell_m();
+  r.cells_hole_filled =
+      detail::fill_floor_holes(state, drops(g, floor_z_m), w, h,
+                               {p.floor_hole_max_m2 / cell_m2, p.floor_hole_min_free_share});
+  for (std::size_t i = 0; i < state.size(); ++i) {
     Cell c = Cell::kUnknown;
-    if (occupied.data[i]) {
+    if (state[i] == detail::NavState::kOccupied) {
       c = Cell::kWall;
       ++r.cells_occupied;
-    } else if (floor_seen[i] || crossed[i]) {
+    } else if (state[i] == detail::NavState::kFree) {
       c = Cell::kFree;
       ++r.cells_free;
       if (floor_seen[i])
         ++r.cells_floor_seen;
-      else
+      else if (crossed[i])
         ++r.cells_ray_free;
     } else {
       ++r.cells_unknown;

@@ -108,7 +108,8 @@ void validate(const ViewpointCheckParams& p) {
     throw UsageError("invalid parameter viewpoint_check.max_occluded_share: must be in [0, 1]");
 }
 
-ViewpointCheck check_viewpoint(const cloud::VoxelGrid& g, const std::vector<Eigen::Vector3f>& points,
+ViewpointCheck check_viewpoint(const cloud::VoxelGrid& g,
+                               const std::vector<Eigen::Vector3f>& points,
                                const Eigen::Vector3d& scanner, const ViewpointCheckParams& p) {
   ViewpointCheck r;
   if (points.empty() || g.voxel_count() == 0) return r;

@@ -77,6 +77,7 @@ void drop_implausible_viewpoint(PointCloud& cloud, const ViewpointCheckParams& p
                        " of sampled points lie behind occupied voxels from it; position dropped "
                        "(no rays, no ghost filter; give --trajectory for a mobile scan)");
   cloud.scanners.clear();
+  r.viewpoint_dropped = true;
 }
 
 // The share of the cells of the floor's 0.2 m blocks (4 x 4 cells of 5 cm) that hold floor
@@ -198,9 +199,7 @@ void map_voxelized(PointCloud cloud, const MapParams& params, MapResult& r) {
   // Only for a sparse scan (LayoutParams::sparse_floor_fill): on a dense one the rule cost
   // object precision (seeds 21-40: 0.82 to 0.77) for nothing.
   r.floor_fill = floor_fill(r.voxels, r.layers.floor_layer);
-  Grid<std::uint8_t> evidence(r.nav.map.width, r.nav.map.height, 0);
-  for (std::size_t i = 0; i < evidence.size(); ++i)
-    evidence.data[i] = r.nav.map.data[i] == Cell::kFree;
+  const Grid<std::uint8_t>& evidence = r.nav.observed_free;  // not the filled floor holes
   const bool sparse = r.floor_fill < params.layout.sparse_floor_fill;
   r.layout = build_layout(r.walls, r.furniture, r.geometry, seeds, params.layout, &support,
                           sparse ? &evidence : nullptr, &evidence);

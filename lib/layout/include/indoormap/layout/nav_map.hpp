@@ -44,6 +44,14 @@ struct NavParams {
   /// across a 20 m building; the body band follows the floor.
   double floor_max_offset_m = 0.2;
   double floor_tile_m = 1.0;
+  /// Floor holes: a component of unknown cells (4-connected, off the map's edge) of at most
+  /// floor_hole_max_m2 whose border is at least floor_hole_min_free_share free becomes free: the
+  /// gaps a multi-beam scanner leaves between the rings its beams draw on the floor, the blind
+  /// disc around a mobile scanner's stop. Not where points lie 0.3 m below the floor (a drop).
+  /// A closed room or the inside of a wall or cabinet is bordered by occupied cells and stays
+  /// unknown. 0: off.
+  double floor_hole_max_m2 = 10.0;
+  double floor_hole_min_free_share = 0.75;
   /// Free space from rays: per scanner position, the map is cast in 2D along azimuth bins, each
   /// to the farthest column in the bin that holds a point below height_m (floor or body band),
   /// stopping at the first occupied cell. false: observed floor alone.
@@ -57,12 +65,16 @@ void validate(const NavParams& params);
 
 struct NavResult {
   Grid<Cell> map;  ///< kWall (occupied), kFree, kUnknown; the grid of voxels.geometry2d()
+  /// 1 where map is free from observation (floor seen, rays), 0 elsewhere and on filled floor
+  /// holes: the layout's free-space evidence, which must not rest on inferred cells.
+  Grid<std::uint8_t> observed_free;
   double body_lo_m = 0.0, body_hi_m = 0.0;  ///< the body band, map-frame heights
   std::int64_t cells_occupied = 0, cells_free = 0, cells_unknown = 0;
-  std::int64_t cells_floor_seen = 0;  ///< free cells whose floor holds points
-  std::int64_t cells_ray_free = 0;    ///< free cells known from rays alone
-  std::int64_t specks_dropped = 0;    ///< body-band columns with points below the evidence rule
-  std::size_t positions = 0;          ///< scanner positions used for rays
+  std::int64_t cells_floor_seen = 0;   ///< free cells whose floor holds points
+  std::int64_t cells_ray_free = 0;     ///< free cells known from rays alone
+  std::int64_t cells_hole_filled = 0;  ///< free cells of filled floor holes (neither of those)
+  std::int64_t specks_dropped = 0;     ///< body-band columns with points below the evidence rule
+  std::size_t positions = 0;           ///< scanner positions used for rays
   std::size_t rays = 0;
   std::vector<std::string> warnings;
 };

@@ -26,10 +26,6 @@ struct NearestOriginResult {
 /// or more than 65535 positions.
 NearestOriginResult assign_nearest_origins(PointCloud& cloud);
 
-}  // namespace indoormap::layout
-
-namespace indoormap::layout {
-
 /// Whether one scanner position can be the origin of a whole cloud (a PCD's VIEWPOINT is; a
 /// mobile scanner's merged cloud's is not: it is one position of the trajectory, or nothing).
 struct ViewpointCheckParams {
@@ -47,14 +43,16 @@ void validate(const ViewpointCheckParams& p);
 
 struct ViewpointCheck {
   std::size_t sampled = 0;
-  std::size_t occluded = 0;  ///< sampled points whose ray from the position crosses an occupied voxel
+  std::size_t occluded =
+      0;  ///< sampled points whose ray from the position crosses an occupied voxel
   double share() const { return sampled ? static_cast<double>(occluded) / sampled : 0.0; }
 };
 
 /// Casts rays from `scanner` (map frame) to a sample of the points through the voxel grid and
 /// counts those that pass an occupied voxel (min_points) more than end_margin_m before their end
 /// and 2 or more layers from it: a point the position could not have seen.
-ViewpointCheck check_viewpoint(const cloud::VoxelGrid& g, const std::vector<Eigen::Vector3f>& points,
+ViewpointCheck check_viewpoint(const cloud::VoxelGrid& g,
+                               const std::vector<Eigen::Vector3f>& points,
                                const Eigen::Vector3d& scanner, const ViewpointCheckParams& p);
 
 }  // namespace indoormap::layout

@@ -2,6 +2,7 @@
 // The whole pre-processing of paper section 3.2.A as one call: level the cloud, voxelise it,
 // analyse the height layers, project the wall and furniture bands, build the room layout M_r.
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,8 +45,11 @@ struct MapResult {
   Grid<std::uint8_t> furniture;  ///< M_f: occupancy of the furniture band
   LayoutResult layout;           ///< M_r and the passage area
   NavResult nav;                 ///< the robot's map (map.pgm): body band, evidence
-  double viewpoint_occluded_share = 0.0;  ///< check_viewpoint of a single position (0: not run)
-  double floor_fill = 1.0;       ///< floor points / cells of their 0.2 m blocks (sparse scans: low)
+  /// check_viewpoint of a file's single position: the share of points hidden from it (none: not
+  /// run), and whether the position was dropped for it.
+  std::optional<double> viewpoint_occluded_share;
+  bool viewpoint_dropped = false;
+  double floor_fill = 1.0;  ///< floor points / cells of their 0.2 m blocks (sparse scans: low)
   std::vector<StageTime> timings;
   std::vector<std::string> warnings;  ///< from every stage, in order
 };

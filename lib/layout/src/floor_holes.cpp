@@ -1,0 +1,64 @@
+#include "floor_holes.hpp"
+
+#include <opencv2/imgproc.hpp>
+
+namespace indoormap::layout::detail {
+
+namespace {
+
+struct Component {
+  std::int64_t cells = 0, free_border = 0, border = 0;
+  bool edge = false, drop = false;
+};
+
+}  // namespace
+
+std::int64_t fill_floor_holes(std::vector<NavState>& state, const std::vector<std::uint8_t>& drop,
+                              int w, int h, const HoleParams& params) {
+  if (w <= 0 || h <= 0) return 0;
+  cv::Mat unknown(h, w, CV_8U);
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c)
+      unknown.at<std::uint8_t>(r, c) =
+          state[static_cast<std::size_t>(r) * w + c] == NavState::kUnknown;
+  cv::Mat labels;
+  const int n = cv::connectedComponents(unknown, labels, 4, CV_32S);
+  std::vector<Component> comp(static_cast<std::size_t>(n));
+  const int dr[4] = {-1, 1, 0, 0}, dc[4] = {0, 0, -1, 1};
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) {
+      const int l = labels.at<int>(r, c);
+      if (l == 0) continue;
+      Component& k = comp[static_cast<std::size_t>(l)];
+      ++k.cells;
+      k.drop = k.drop || drop[static_cast<std::size_t>(r) * w + c];
+      for (int d = 0; d < 4; ++d) {
+        const int rr = r + dr[d], cc = c + dc[d];
+        if (rr < 0 || cc < 0 || rr >= h || cc >= w) {
+          k.edge = true;
+          continue;
+        }
+        const NavState s = state[static_cast<std::size_t>(rr) * w + cc];
+        if (s == NavState::kUnknown) continue;
+        ++k.border;
+        k.free_border += s == NavState::kFree;
+      }
+    }
+  std::vector<std::uint8_t> fill(comp.size(), 0);
+  for (std::size_t l = 1; l < comp.size(); ++l) {
+    const Component& k = comp[l];
+    fill[l] = !k.edge && !k.drop && k.border > 0 &&
+              static_cast<double>(k.cells) <= params.max_cells &&
+              static_cast<double>(k.free_border) >= params.min_free_share * k.border;
+  }
+  std::int64_t filled = 0;
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c)
+      if (fill[static_cast<std::size_t>(labels.at<int>(r, c))]) {
+        state[static_cast<std::size_t>(r) * w + c] = NavState::kFree;
+        ++filled;
+      }
+  return filled;
+}
+
+}  // namespace indoormap::layout::detail

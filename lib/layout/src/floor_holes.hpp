@@ -1,0 +1,24 @@
+#pragma once
+// Holes in the observed floor (nav_map.cpp): without ray evidence, the floor's returns leave
+// gaps that are no obstacle: between the rings of a multi-beam scanner's beams, and around a
+// mobile scanner's path where it stopped (its own blind disc). docs/pipeline.md, "Floor holes".
+#include <cstdint>
+#include <vector>
+
+namespace indoormap::layout::detail {
+
+enum class NavState : std::uint8_t { kUnknown, kFree, kOccupied };
+
+struct HoleParams {
+  double max_cells = 0.0;        ///< larger unknown components stay unknown
+  double min_free_share = 0.75;  ///< of the component's border cells that are free
+};
+
+/// Turns into free every 4-connected component of kUnknown cells of the w x h grid that does not
+/// touch the grid's edge, holds at most max_cells cells, has at least min_free_share of its
+/// border (the 4-neighbours outside it) free, and holds no cell with drop[i] set (points below
+/// the floor: a stairwell, a hole in the floor). Returns the cells made free.
+std::int64_t fill_floor_holes(std::vector<NavState>& state, const std::vector<std::uint8_t>& drop,
+                              int w, int h, const HoleParams& params);
+
+}  // namespace indoormap::layout::detail
