@@ -44,10 +44,8 @@ namespace {
 struct Columns {
   std::vector<std::uint32_t> points;
   std::vector<std::int32_t> lo, hi;
-  std::vector<std::uint16_t> layers;     ///< body-band layers holding points
-  std::vector<std::uint64_t> bits;       ///< those layers, bit (layer - body_lo) % 64
-  std::vector<std::uint16_t> top, pair;  ///< points in the column's highest layer; the most in
-                                         ///< two adjacent layers
+  std::vector<std::uint16_t> layers;  ///< body-band layers holding points
+  std::vector<std::uint64_t> bits;    ///< those layers, bit (layer - body_lo) % 64
   std::vector<std::uint8_t> floor_seen, low_seen;
 };
 
@@ -93,8 +91,7 @@ Columns scan_columns(const cloud::VoxelGrid& g, std::int64_t floor_lo, std::int6
   const std::size_t n = static_cast<std::size_t>(g.layer_size());
   Columns c{std::vector<std::uint32_t>(n, 0), std::vector<std::int32_t>(n, -1),
             std::vector<std::int32_t>(n, -1), std::vector<std::uint16_t>(n, 0),
-            std::vector<std::uint64_t>(n, 0), std::vector<std::uint16_t>(n, 0),
-            std::vector<std::uint16_t>(n, 0), std::vector<std::uint8_t>(n, 0),
+            std::vector<std::uint64_t>(n, 0), std::vector<std::uint8_t>(n, 0),
             std::vector<std::uint8_t>(n, 0)};
   const auto [dmin, dmax] = std::minmax_element(off.begin(), off.end());
   const std::int64_t z0 = std::max<std::int64_t>(0, floor_lo + (n ? *dmin : 0));
@@ -111,9 +108,6 @@ Columns scan_columns(const cloud::VoxelGrid& g, std::int64_t floor_lo, std::int6
         c.floor_seen[i] = 1;
         continue;
       }
-      const auto below = static_cast<std::uint16_t>(c.hi[i] == zr - 1 ? c.top[i] : 0);
-      c.pair[i] = std::max(c.pair[i], static_cast<std::uint16_t>(std::min(65535, below + k)));
-      c.top[i] = k;
       c.points[i] += k;
       ++c.layers[i];
       c.bits[i] |= std::uint64_t{1} << ((zr - body_lo) % 64);
@@ -126,38 +120,48 @@ Columns scan_columns(const cloud::VoxelGrid& g, std::int64_t floor_lo, std::int6
 
 // The body-band columns that are obstacles (docs/pipeline.md, "Specks"): at least min_points
 // points, or min_span layers, or part of a surface: min_neighbours of the 8 neighbours hold
-// body-band points. Where the floor below the column was seen, the neighbours must hold a point
+// body-band points. floor: the seen floor, or empty (a position known: the ghost filter ran).
+// Where the floor below the column was seen, the neighbours must hold a point
 // within one layer of one of the column's own: a far table top or a wall row is level across
-// its cells, the veil of mixed pixels in a doorway (points at random heights over a floor seen
-// through them) is not.
+// its cells. And a scatter column (seen floor around, no two points within a layer) with two
+// scatter neighbours at other heights is no obstacle at all: the veil of mixed pixels in a
+// doorway, points at random heights over a floor seen through them.
 Grid<std::uint8_t> occupied_columns(const Columns& col, const std::vector<std::uint8_t>& floor,
                                     int w, int h, const NavParams& p, std::int32_t min_span,
                                     std::int64_t& specks) {
   Grid<std::uint8_t> occupied(w, h, 0);
-  // A scatter column: the floor below was seen and no two of its points lie within one layer.
-  const auto scatter = [&](std::size_t i) {
-    return col.lo[i] >= 0 && floor[i] && col.pair[i] <= 1;
-  };
+  const auto seen = [&](std::size_t i) { return !floor.empty() && floor[i]; };
+  // Scatter: no two points in one layer or in two adjacent layers, over seen floor that goes on
+  // in all four directions (a wall's face has its unseen inside on one side).
+  std::vector<std::uint8_t> scatter(occupied.size(), 0);
+  for (int row = 1; row + 1 < h; ++row)
+    for (int c = 1; c + 1 < w; ++c) {
+      const std::size_t i = static_cast<std::size_t>(row) * w + c;
+      const auto wu = static_cast<std::size_t>(w);
+      const std::uint64_t b = col.bits[i];
+      scatter[i] = col.lo[i] >= 0 && !(b & (b << 1) & (b << 2)) && seen(i) && seen(i - 1) &&
+                   seen(i + 1) && seen(i - wu) && seen(i + wu);
+    }
+  const auto spread = [](std::uint64_t b) { return b | (b << 1) | (b >> 1); };
   for (int row = 0; row < h; ++row)
     for (int c = 0; c < w; ++c) {
       const std::size_t i = static_cast<std::size_t>(row) * w + c;
       if (col.lo[i] < 0) continue;
-      const std::uint64_t near = col.bits[i] | (col.bits[i] << 1) | (col.bits[i] >> 1);
+      const std::uint64_t near = spread(col.bits[i]);
       int nb = 0, level = 0, scattered = 0;
       for (int dr = -1; dr <= 1; ++dr)
         for (int dc = -1; dc <= 1; ++dc) {
           if ((!dr && !dc) || !occupied.contains(c + dc, row + dr)) continue;
           const std::size_t j = static_cast<std::size_t>(row + dr) * w + c + dc;
-          const bool is_level = (col.bits[j] & near) != 0;
           nb += col.lo[j] >= 0;
-          level += is_level;
-          // Two one-point columns at one height are a piece of a sparse surface, not scatter.
-          const bool one_level =
-              col.layers[i] == 1 && col.layers[j] == 1 && std::abs(col.lo[i] - col.lo[j]) <= 1;
-          scattered += scatter(j) && !one_level;
+          level += (col.bits[j] & near) != 0;
+          // Columns at the same heights (each layer within one of the other's) are pieces of
+          // one sparse surface, not scatter.
+          const bool same = !(col.bits[j] & ~near) && !(col.bits[i] & ~spread(col.bits[j]));
+          scattered += scatter[j] && !same;
         }
-      const bool surface = nb >= p.min_neighbours && (!floor[i] || level >= p.min_neighbours);
-      const bool veil = scatter(i) && scattered >= 2;
+      const bool surface = nb >= p.min_neighbours && (!seen(i) || level >= p.min_neighbours);
+      const bool veil = scatter[i] && scattered >= 2;
       const bool ok = !veil && (col.points[i] >= static_cast<std::uint32_t>(p.min_points) ||
                                 col.layers[i] >= min_span || surface);
       occupied.data[i] = ok;
@@ -244,7 +248,8 @@ std::size_t cast_from(const Eigen::Vector2d& s_cells, const std::vector<std::uin
 }  // namespace
 
 NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
-                        const std::vector<Eigen::Vector3d>& scanners, const NavParams& p) {
+                        const std::vector<Eigen::Vector3d>& scanners, const NavParams& p,
+                        bool veils_cleared) {
   validate(p);
   NavResult r;
   const GridGeometry geo = g.geometry2d();
@@ -273,8 +278,9 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
     const cv::Mat square = cv::getStructuringElement(cv::MORPH_RECT, {3, 3});
     cv::morphologyEx(m, m, cv::MORPH_CLOSE, square, {-1, -1}, p.floor_closing_cells);
   }
-  const Grid<std::uint8_t> occupied =
-      occupied_columns(col, floor_seen, w, h, p, min_span, r.specks_dropped);
+  const std::vector<std::uint8_t> no_floor;  // the ghost filter cleared the veils: rules aside
+  const Grid<std::uint8_t> occupied = occupied_columns(col, veils_cleared ? no_floor : floor_seen,
+                                                       w, h, p, min_span, r.specks_dropped);
   for (std::size_t i = 0; i < floor_seen.size(); ++i) floor_seen[i] &= !occupied.data[i];
   std::vector<std::uint8_t> crossed(occupied.size(), 0);
   if (p.rays) {

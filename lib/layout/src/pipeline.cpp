@@ -31,10 +31,12 @@ class Stopwatch {
 void run_ghost_filter(PointCloud& cloud, const cloud::GhostParams& params, MapResult& r) {
   if (cloud.scanners.size() == 1) {
     r.ghosts = cloud::remove_ghost_voxels(r.voxels, cloud.points, cloud.scanners[0], params);
+    r.ghost_origins_exact = r.ghosts.applied;
     return;
   }
   if (!params.enabled || cloud.scanners.empty()) return;
-  if (cloud.origins.empty()) {
+  const bool recorded = !cloud.origins.empty();
+  if (!recorded) {
     if (!assign_nearest_origins(cloud).applied) {
       r.warnings.push_back("ghost filter skipped: " + std::to_string(cloud.scanners.size()) +
                            " scanner positions and no record of which point came from which");
@@ -54,6 +56,7 @@ void run_ghost_filter(PointCloud& cloud, const cloud::GhostParams& params, MapRe
   }
   if (covered == cloud.points.size() && !sources.empty()) {
     r.ghosts = cloud::remove_ghost_voxels_by_origin(r.voxels, sources, params);
+    r.ghost_origins_exact = r.ghosts.applied && recorded;
     return;
   }
   r.warnings.push_back("ghost filter skipped: " + std::to_string(cloud.scanners.size()) +
@@ -193,7 +196,8 @@ void map_voxelized(PointCloud cloud, const MapParams& params, MapResult& r) {
   std::vector<Eigen::Vector2d> seeds;
   for (const auto& s : cloud.scanners) seeds.emplace_back(s.x(), s.y());
   // The navigation map first: its free cells (observed floor, rays) are the layout's evidence.
-  r.nav = build_nav_map(r.voxels, r.layers.floor_z_m, cloud.scanners, params.nav);
+  r.nav = build_nav_map(r.voxels, r.layers.floor_z_m, cloud.scanners, params.nav,
+                        r.ghost_origins_exact);
   for (const auto& w : r.nav.warnings) r.warnings.push_back(w);
   r.timings.push_back({"nav_map", sw.lap_ms()});
   // Only for a sparse scan (LayoutParams::sparse_floor_fill): on a dense one the rule cost

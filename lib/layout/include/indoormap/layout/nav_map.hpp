@@ -81,8 +81,11 @@ struct NavResult {
 
 /// Builds the navigation map of one storey from its voxel grid (ghosts already cleared) and the
 /// floor height floor_z_m. scanners_map: positions in the map frame (any number, also none).
+/// veils_cleared: the ghost filter ran with every point's own origin, so no veil of mixed pixels
+/// is left in the doorways; otherwise (no position, origins estimated from a trajectory) the seen
+/// floor below a column stands in for it (docs/pipeline.md, "Specks").
 NavResult build_nav_map(const cloud::VoxelGrid& voxels, double floor_z_m,
                         const std::vector<Eigen::Vector3d>& scanners_map,
-                        const NavParams& params = {});
+                        const NavParams& params = {}, bool veils_cleared = false);
 
 }  // namespace indoormap::layout

@@ -45,6 +45,9 @@ struct MapResult {
   Grid<std::uint8_t> furniture;  ///< M_f: occupancy of the furniture band
   LayoutResult layout;           ///< M_r and the passage area
   NavResult nav;                 ///< the robot's map (map.pgm): body band, evidence
+  /// The ghost filter ran with every point's own scanner (one position, or origins the input
+  /// records): the doorway veils are gone. Not with origins estimated from a trajectory.
+  bool ghost_origins_exact = false;
   /// check_viewpoint of a file's single position: the share of points hidden from it (none: not
   /// run), and whether the position was dropped for it.
   std::optional<double> viewpoint_occluded_share;
