@@ -120,19 +120,19 @@ Columns scan_columns(const cloud::VoxelGrid& g, std::int64_t floor_lo, std::int6
 
 // The body-band columns that are obstacles (docs/pipeline.md, "Specks"): at least min_points
 // points, or min_span layers, or part of a surface: min_neighbours of the 8 neighbours hold
-// body-band points. floor: the seen floor, or empty (a position known: the ghost filter ran).
-// Where the floor below the column was seen, the neighbours must hold a point
-// within one layer of one of the column's own: a far table top or a wall row is level across
-// its cells. And a scatter column (seen floor around, no two points within a layer) with two
-// scatter neighbours at other heights is no obstacle at all: the veil of mixed pixels in a
-// doorway, points at random heights over a floor seen through them.
+// body-band points. floor: the seen floor, or empty when the ghost filter ran with every point's
+// own origin (then no veil is left). Where the floor below the column was seen, the neighbours
+// must hold a point within one layer of one of the column's own: a far table top or a wall row
+// is level across its cells. And a scatter column (seen floor around, no three consecutive
+// layers) with two scatter neighbours at other heights is no obstacle at all: the veil of mixed
+// pixels in a doorway, points at random heights over a floor seen through them.
 Grid<std::uint8_t> occupied_columns(const Columns& col, const std::vector<std::uint8_t>& floor,
                                     int w, int h, const NavParams& p, std::int32_t min_span,
                                     std::int64_t& specks) {
   Grid<std::uint8_t> occupied(w, h, 0);
   const auto seen = [&](std::size_t i) { return !floor.empty() && floor[i]; };
-  // Scatter: no two points in one layer or in two adjacent layers, over seen floor that goes on
-  // in all four directions (a wall's face has its unseen inside on one side).
+  // Scatter: no three consecutive layers hold points, over seen floor that goes on in all four
+  // directions (a wall's face has its unseen inside on one side).
   std::vector<std::uint8_t> scatter(occupied.size(), 0);
   for (int row = 1; row + 1 < h; ++row)
     for (int c = 1; c + 1 < w; ++c) {
@@ -278,7 +278,7 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
     const cv::Mat square = cv::getStructuringElement(cv::MORPH_RECT, {3, 3});
     cv::morphologyEx(m, m, cv::MORPH_CLOSE, square, {-1, -1}, p.floor_closing_cells);
   }
-  const std::vector<std::uint8_t> no_floor;  // the ghost filter cleared the veils: rules aside
+  const std::vector<std::uint8_t> no_floor;  // the exact ghost filter cleared the veils
   const Grid<std::uint8_t> occupied = occupied_columns(col, veils_cleared ? no_floor : floor_seen,
                                                        w, h, p, min_span, r.specks_dropped);
   for (std::size_t i = 0; i < floor_seen.size(); ++i) floor_seen[i] &= !occupied.data[i];

@@ -43,8 +43,8 @@ void validate(const ViewpointCheckParams& p);
 
 struct ViewpointCheck {
   std::size_t sampled = 0;
-  std::size_t occluded =
-      0;  ///< sampled points whose ray from the position crosses an occupied voxel
+  /// sampled points whose ray from the position crosses an occupied voxel
+  std::size_t occluded = 0;
   double share() const { return sampled ? static_cast<double>(occluded) / sampled : 0.0; }
 };
 
