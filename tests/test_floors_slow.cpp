@@ -220,6 +220,9 @@ TEST(FloorsApp, TwoStoreysEachMappedOnItsOwn) {
     const json s = read_json(sub / "summary.json");
     EXPECT_EQ(s["storey"].get<int>(), k);
     EXPECT_NEAR(s["floor_z_m"].get<double>(), k * up, 0.05) << "within one cell";
+    // The top-level list gives the floor the storey's map was made with.
+    EXPECT_DOUBLE_EQ(top["storeys"][k]["floor_z_m"].get<double>(), s["floor_z_m"].get<double>());
+    EXPECT_TRUE(top["storeys"][k].contains("histogram_floor_z_m"));
     const Figures f = figures(sub, truth);
     EXPECT_EQ(f.positions, 5);
     EXPECT_GE(f.doors_open, 0.95 * f.doors) << f.doors_open << " of " << f.doors;

@@ -172,6 +172,8 @@ PipelineRun map_loaded(cloud_io::LoadResult loaded, const PipelineCli& cli, Pipe
     run.storeys = maps.storeys;
     run.mapped = maps.mapped;
     if (maps.maps.empty()) throw InputError(names, "no storey holds points");
+    for (const auto& m : maps.maps)
+      run.mapped_surfaces_m.emplace_back(m.layers.floor_z_m, m.layers.ceiling_z_m);
     run.map = std::move(maps.maps.front());
     run.more_maps.assign(std::make_move_iterator(maps.maps.begin() + 1),
                          std::make_move_iterator(maps.maps.end()));
@@ -374,11 +376,17 @@ json storeys_json(const PipelineRun& run) {
   json out = json::array();
   for (std::size_t k = 0; k < run.storeys.size(); ++k) {
     const auto& s = run.storeys[k];
-    const bool mapped =
-        std::find(run.mapped.begin(), run.mapped.end(), static_cast<int>(k)) != run.mapped.end();
+    const auto at = std::find(run.mapped.begin(), run.mapped.end(), static_cast<int>(k));
+    const bool mapped = at != run.mapped.end();
+    // A mapped storey's heights are those its map was made with (its own levelling and layer
+    // analysis); the surface histogram of the whole cloud that found it can be a cell or two off.
+    const auto i = static_cast<std::size_t>(at - run.mapped.begin());
+    const bool own = mapped && i < run.mapped_surfaces_m.size();
     out.push_back({{"index", k},
-                   {"floor_z_m", s.floor_z_m},
-                   {"ceiling_z_m", s.ceiling_z_m},
+                   {"floor_z_m", own ? run.mapped_surfaces_m[i].first : s.floor_z_m},
+                   {"ceiling_z_m", own ? run.mapped_surfaces_m[i].second : s.ceiling_z_m},
+                   {"histogram_floor_z_m", s.floor_z_m},
+                   {"histogram_ceiling_z_m", s.ceiling_z_m},
                    {"z_range_m", {s.lo_z_m, s.hi_z_m}},
                    {"mapped", mapped},
                    {"dir", run.storeys.size() > 1 ? "storey_" + std::to_string(k) : "."}});

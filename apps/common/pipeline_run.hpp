@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli.hpp"
@@ -25,6 +26,9 @@ struct PipelineRun {
   std::vector<layout::Storey> storeys;        ///< every storey found, bottom up
   std::vector<int> mapped;                    ///< the storeys mapped: map, then more_maps
   std::vector<layout::MapResult> more_maps;
+  /// Floor and ceiling heights (map frame) of each mapped storey's own map, in run.mapped's order:
+  /// kept here because the apps move the maps on while writing.
+  std::vector<std::pair<double, double>> mapped_surfaces_m;
   std::size_t kept = 0;
   std::string scanner_source;  ///< "file", "config", "trajectory" or "estimated"
   double load_ms = 0.0;
@@ -80,8 +84,9 @@ std::vector<std::string> write_map_outputs(const std::filesystem::path& out, con
 nlohmann::json summary_json(const std::string& program, const PipelineRun& run,
                             const PipelineConfig& config);
 
-/// The storeys found (index, floor and ceiling heights in the map frame, the points' z range,
-/// whether mapped, and the directory of its outputs).
+/// The storeys found (index; floor and ceiling heights in the map frame, a mapped storey's as its
+/// map has them, and as the storey histogram found them; the points' z range; whether mapped; the
+/// directory of its outputs).
 nlohmann::json storeys_json(const PipelineRun& run);
 
 /// How to go from the map frame back to the source frame of LAS inputs (the local-frame offset,
