@@ -82,6 +82,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("layers", "wall_min_extent_m", ly.wall_min_extent_m);
   f("layers", "furniture_max_height_m", ly.furniture_max_height_m);
   f("layers", "low_wall_band_m", ly.low_wall_band_m);
+  f("layers", "low_wall_min_length_m", ly.low_wall_min_length_m);
   f("layers", "floor_z_m", ly.floor_z_m);
   f("layers", "ceiling_z_m", ly.ceiling_z_m);
   f("layers", "wall_band_lo_m", ly.wall_band_lo_m);

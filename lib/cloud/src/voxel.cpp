@@ -73,6 +73,8 @@ void validate(const LayerParams& ly) {
   require(ly.furniture_max_height_m > 0, "layers.furniture_max_height_m: must be > 0");
   require(ly.low_wall_band_m >= 0 && ly.low_wall_band_m <= 1,
           "layers.low_wall_band_m: must be in [0, 1]");
+  require(std::isfinite(ly.low_wall_min_length_m) && ly.low_wall_min_length_m >= 0,
+          "layers.low_wall_min_length_m: must be >= 0");
   require(ly.surface_block_m >= 0 && ly.surface_block_m <= 2,
           "layers.surface_block_m: must be in [0, 2]");
   require(ly.ceiling_onset_factor > 1, "layers.ceiling_onset_factor: must be > 1");

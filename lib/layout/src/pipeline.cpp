@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <opencv2/imgproc.hpp>
 #include <span>
 
 #include "indoormap/layout/nearest_origin.hpp"
@@ -81,6 +82,40 @@ void drop_implausible_viewpoint(PointCloud& cloud, const ViewpointCheckParams& p
                        "(no rays, no ghost filter; give --trajectory for a mobile scan)");
   cloud.scanners.clear();
   r.viewpoint_dropped = true;
+}
+
+// Clears every 8-connected piece of the low wall band's mask that is shorter than min_cells on
+// both sides of its bounding box and stands on nothing: fewer than half of its cells have points
+// in at least half of the furniture band's layers below (LayerParams::low_wall_min_length_m). A
+// lamp hangs over air and a desk; a wall, however short, goes on down to the floor.
+void drop_hanging_pieces(Grid<std::uint8_t>& mask, const cloud::VoxelGrid& g,
+                         const cloud::HeightBand& below, int min_points, double min_cells) {
+  if (min_cells <= 1.0 || mask.width == 0 || mask.height == 0) return;
+  cv::Mat m(mask.height, mask.width, CV_8U, mask.data.data()), labels, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(m, labels, stats, centroids, 8, CV_32S);
+  std::vector<int> cells(static_cast<std::size_t>(n), 0), standing(cells.size(), 0);
+  const std::int64_t z0 = std::max<std::int64_t>(0, below.lo_layer);
+  const std::int64_t z1 = std::min(below.hi_layer, g.nz - 1);
+  for (int r = 0; r < mask.height; ++r)
+    for (int c = 0; c < mask.width; ++c) {
+      const auto l = static_cast<std::size_t>(labels.at<int>(r, c));
+      if (l == 0) continue;
+      ++cells[l];
+      std::int64_t filled = 0;
+      for (std::int64_t z = z0; z <= z1; ++z) filled += g.count(c, r, z) >= min_points;
+      standing[l] += 2 * filled >= z1 - z0 + 1;
+    }
+  std::vector<std::uint8_t> keep(cells.size(), 1);
+  for (int l = 1; l < n; ++l) {
+    const bool shortish = std::max(stats.at<int>(l, cv::CC_STAT_WIDTH),
+                                   stats.at<int>(l, cv::CC_STAT_HEIGHT)) < min_cells;
+    keep[static_cast<std::size_t>(l)] = !shortish || 2 * standing[static_cast<std::size_t>(l)] >=
+                                                         cells[static_cast<std::size_t>(l)];
+  }
+  for (int r = 0; r < mask.height; ++r)
+    for (int c = 0; c < mask.width; ++c)
+      if (!keep[static_cast<std::size_t>(labels.at<int>(r, c))])
+        mask.data[static_cast<std::size_t>(r) * mask.width + c] = 0;
 }
 
 // The share of the cells of the floor's 0.2 m blocks (4 x 4 cells of 5 cm) that hold floor
@@ -168,9 +203,10 @@ void map_voxelized(PointCloud cloud, const MapParams& params, MapResult& r) {
   // The walls of a room lower than the storey's ceiling stand through the low wall band.
   const cloud::HeightBand& lb = r.layers.low_wall_band;
   if (lb.hi_layer >= lb.lo_layer) {
-    const auto low =
-        cloud::project_band(r.voxels, lb, lp.min_points_per_voxel, lp.isolated_min_points,
-                            static_cast<int>(lb.hi_layer - lb.lo_layer + 1));
+    auto low = cloud::project_band(r.voxels, lb, lp.min_points_per_voxel, lp.isolated_min_points,
+                                   static_cast<int>(lb.hi_layer - lb.lo_layer + 1));
+    drop_hanging_pieces(low, r.voxels, r.layers.furniture_band, lp.min_points_per_voxel,
+                        r.voxels.to_cells(lp.low_wall_min_length_m));
     for (std::size_t i = 0; i < low.size(); ++i) r.walls.data[i] |= low.data[i];
   }
   r.furniture = cloud::project_band(r.voxels, r.layers.furniture_band, lp.min_points_per_voxel,

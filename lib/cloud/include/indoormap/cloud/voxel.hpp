@@ -78,6 +78,11 @@ struct LayerParams {
   /// occupied through the whole of this height just above the furniture band is wall as well
   /// (LayerAnalysis::low_wall_band). 0: off (the paper's single band).
   double low_wall_band_m = 0.2;
+  /// A piece of the low wall band (8-connected) whose bounding box is shorter than this on both
+  /// sides and that stands on nothing (under fewer than half of its cells, points in half the
+  /// furniture band's layers) is no wall: a lamp hanging over a desk into the band. A wall, even a
+  /// short stub between two windows, goes on down to the floor. 0: off.
+  double low_wall_min_length_m = 1.0;
   // Overrides (map-frame heights, metres); unset means "detect".
   std::optional<double> floor_z_m;
   std::optional<double> ceiling_z_m;
