@@ -94,10 +94,6 @@ NearestOriginResult assign_nearest_origins(PointCloud& cloud) {
   return r;
 }
 
-}  // namespace indoormap::layout
-
-namespace indoormap::layout {
-
 void validate(const ViewpointCheckParams& p) {
   if (p.samples < 1) throw UsageError("invalid parameter viewpoint_check.samples: must be >= 1");
   if (!(p.end_margin_m >= 0.0 && std::isfinite(p.end_margin_m)))

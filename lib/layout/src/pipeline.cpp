@@ -188,6 +188,7 @@ MapResult make_map(PointCloud cloud, const MapParams& params) {
 void map_voxelized(PointCloud cloud, const MapParams& params, MapResult& r) {
   Stopwatch sw;
   drop_implausible_viewpoint(cloud, params.viewpoint_check, r);
+  if (r.viewpoint_occluded_share) r.timings.push_back({"viewpoint_check", sw.lap_ms()});
   run_ghost_filter(cloud, params.ghosts, r);
   if (r.ghosts.applied) r.timings.push_back({"ghosts", sw.lap_ms()});
 
