@@ -57,6 +57,10 @@ TEST(CloudParams, EachStructNamesItsKey) {
   low.low_wall_band_m = -0.1;
   EXPECT_EQ(usage_error([&] { validate(low); }),
             "invalid parameter layers.low_wall_band_m: must be in [0, 1]");
+  LayerParams piece;
+  piece.low_wall_min_length_m = -1;
+  EXPECT_EQ(usage_error([&] { validate(piece); }),
+            "invalid parameter layers.low_wall_min_length_m: must be >= 0");
   LevelParams lv;
   lv.max_tilt_deg = 90;
   EXPECT_EQ(usage_error([&] { validate(lv); }),
