@@ -544,6 +544,35 @@ TEST(Ghosts, SameResultAsTheRayWalkingReference) {
   }
 }
 
+// Sources sampled beforehand (every stride-th point of each, the stride of the whole cloud) give
+// the same grid as the filter sampling them itself: what a merged cloud with estimated origins
+// relies on.
+TEST(Ghosts, PresampledSourcesGiveTheSameGrid) {
+  const Eigen::Vector3d s1(2.5, 3.0, 1.2), s2(6.0, 1.5, 1.6);
+  const auto p1 = random_room_scan(s1, 60000, 11), p2 = random_room_scan(s2, 40000, 12);
+  std::vector<Eigen::Vector3f> all = p1;
+  all.insert(all.end(), p2.begin(), p2.end());
+  VoxelParams vp;
+  const VoxelGrid g0 = voxelize(all, robust_bounds(all, vp), vp);
+  GhostParams gp;
+  gp.max_rays = 30'000;
+  const std::size_t stride = ghost_ray_stride(all.size(), gp);
+  ASSERT_EQ(stride, 4u);
+  auto sample = [&](const std::vector<Eigen::Vector3f>& p) {
+    std::vector<Eigen::Vector3f> out;
+    for (std::size_t i = 0; i < p.size(); i += stride) out.push_back(p[i]);
+    return out;
+  };
+  const auto q1 = sample(p1), q2 = sample(p2);
+  VoxelGrid a = g0, b = g0;
+  const GhostResult ra = remove_ghost_voxels_by_origin(a, {{p1, s1}, {p2, s2}}, gp);
+  const GhostResult rb = remove_presampled_ghost_voxels(b, {{q1, s1}, {q2, s2}}, stride, gp);
+  EXPECT_GT(ra.voxels_removed, 100);
+  EXPECT_EQ(ra.rays, rb.rays);
+  EXPECT_EQ(ra.voxels_removed, rb.voxels_removed);
+  EXPECT_EQ(a.counts, b.counts);
+}
+
 TEST(Ghosts, MixedPixelsBehindAnEdgeGoTheSurfacesStay) {
   const RayScan s = ray_scan(7);
   ASSERT_GT(s.mixed_points.size(), 10u);

@@ -23,6 +23,8 @@ TEST(LoadPcd, AsciiPointsViewpointAndDroppedNaN) {
   ASSERT_EQ(r.cloud.points.size(), 2u);
   expect_point(r.cloud.points[0], 1, 2, 3);
   expect_point(r.cloud.points[1], -4.5, 5, 60);
+  EXPECT_EQ(r.lo_m, Eigen::Vector3f(-4.5f, 2, 3)) << "the NaN point counts not";
+  EXPECT_EQ(r.hi_m, Eigen::Vector3f(1, 5, 60));
   ASSERT_EQ(r.inputs.size(), 1u);
   EXPECT_EQ(r.inputs[0].format, "pcd");
   EXPECT_EQ(r.inputs[0].points_read, 3u);
@@ -40,6 +42,8 @@ TEST(LoadPcd, BinaryWithDoubleFieldAndUnitAxisConversion) {
   expect_point(r.cloud.points[0], 1, 2, 3);
   expect_point(r.cloud.points[1], 4, 5, 6);
   EXPECT_EQ(r.inputs[0].points_dropped, 1u);
+  EXPECT_EQ(r.lo_m, Eigen::Vector3f(1, 2, 3)) << "bounds of the kept points, taken while loading";
+  EXPECT_EQ(r.hi_m, Eigen::Vector3f(4, 5, 6));
 
   // Centimetres, y up: (x, y, z) cm -> (x, -z, y) / 100 m; the VIEWPOINT converts the same way.
   LoadOptions o;
@@ -49,10 +53,40 @@ TEST(LoadPcd, BinaryWithDoubleFieldAndUnitAxisConversion) {
   ASSERT_EQ(r.cloud.points.size(), 2u);
   expect_point(r.cloud.points[0], 0.01, -0.03, 0.02);
   expect_point(r.cloud.points[1], 0.04, -0.06, 0.05);
+  EXPECT_NEAR(r.lo_m.y(), -0.06, 1e-6) << "bounds in the output frame";
+  EXPECT_NEAR(r.hi_m.y(), -0.03, 1e-6);
   ASSERT_EQ(r.cloud.scanners.size(), 1u);
   EXPECT_NEAR(r.cloud.scanners[0].x(), 0.005, 1e-12);
   EXPECT_NEAR(r.cloud.scanners[0].y(), -0.02, 1e-12);
   EXPECT_NEAR(r.cloud.scanners[0].z(), -0.01, 1e-12);
+}
+
+// The binary body reader: fields before x with COUNT > 1, more points than one read chunk
+// (4 MiB), every point where it was written, in order.
+TEST(LoadPcd, BinaryManyPointsAcrossChunksWithLeadingArrayField) {
+  const std::size_t n = 300'000;  // 15 bytes each: 4.5 MB, two chunks
+  std::string bytes =
+      "# .PCD v0.7\nVERSION 0.7\nFIELDS tag x y z\nSIZE 1 4 4 4\nTYPE U F F F\n"
+      "COUNT 3 1 1 1\nWIDTH " +
+      std::to_string(n) + "\nHEIGHT 1\nPOINTS " + std::to_string(n) + "\nDATA binary\n";
+  auto coord = [](std::size_t i, int a) { return static_cast<float>(i) * 0.001f + 10.0f * a; };
+  for (std::size_t i = 0; i < n; ++i) {
+    bytes.append(3, static_cast<char>(i & 0x7f));
+    for (int a = 0; a < 3; ++a) {
+      const float v = coord(i, a);
+      char b[4];
+      std::memcpy(b, &v, 4);
+      bytes.append(b, 4);
+    }
+  }
+  const auto f = scratch_dir() / "many.pcd";
+  write_text(f, bytes);
+  const auto r = load_cloud(f.string());
+  ASSERT_EQ(r.cloud.points.size(), n);
+  for (std::size_t i = 0; i < n; i += 997)
+    for (int a = 0; a < 3; ++a) ASSERT_EQ(r.cloud.points[i][a], coord(i, a)) << i << " " << a;
+  EXPECT_EQ(r.cloud.points.back(),
+            Eigen::Vector3f(coord(n - 1, 0), coord(n - 1, 1), coord(n - 1, 2)));
 }
 
 TEST(LoadPcd, BinaryCompressed) {

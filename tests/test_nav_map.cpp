@@ -148,44 +148,44 @@ TEST(NavMap, FloorHolesBetweenRingsFilledCabinetAndShaftNot) {
 }
 
 // Two positions 10 m apart: each point goes to its nearest (the other is more than 1.5 m
-// farther), the points are reordered by origin, none lost. Positions 0.5 m apart: a point may
-// take any of those within 1.5 m of its nearest, never a farther one.
+// farther), none lost, the cloud untouched. Positions 0.5 m apart: a point may take any of those
+// within 1.5 m of its nearest, never a farther one. With stride 3 a third of the points is taken.
 TEST(NearestOrigin, TerrestrialNearestTrajectoryAmongTheNear) {
   PointCloud c;
   c.scanners = {{0, 0, 1}, {10, 0, 1}};
   for (float x : {1.0f, 9.0f, 2.0f, 8.5f, 0.5f}) c.points.emplace_back(x, 0.3f, 0.5f);
-  const auto before = c.points;
-  const auto r = assign_nearest_origins(c);
+  const auto r = sample_by_nearest_origin(c, 1);
   ASSERT_TRUE(r.applied);
-  ASSERT_EQ(c.origins.size(), 2u);
-  for (const auto& o : c.origins)
-    for (std::size_t i = o.first; i < o.first + o.count; ++i)
-      EXPECT_EQ(o.scanner, c.points[i].x() < 5 ? 0u : 1u) << i;
-  EXPECT_EQ(c.origins[0].count + c.origins[1].count, before.size());
-  for (const auto& p : before)
-    EXPECT_NE(std::find(c.points.begin(), c.points.end(), p), c.points.end());
+  ASSERT_EQ(r.points.size(), 2u);
+  EXPECT_EQ(r.positions_used, 2u);
+  EXPECT_EQ(r.points[0], (std::vector<Eigen::Vector3f>{c.points[0], c.points[2], c.points[4]}));
+  EXPECT_EQ(r.points[1], (std::vector<Eigen::Vector3f>{c.points[1], c.points[3]}));
+  const auto every_third = sample_by_nearest_origin(c, 3);  // points 0 and 3
+  EXPECT_EQ(every_third.points[0], std::vector<Eigen::Vector3f>{c.points[0]});
+  EXPECT_EQ(every_third.points[1], std::vector<Eigen::Vector3f>{c.points[3]});
 
   PointCloud t;
   for (int k = 0; k <= 40; ++k) t.scanners.emplace_back(0.5 * k, 0.0, 1.0);  // 0..20 m
   for (int i = 0; i < 400; ++i) t.points.emplace_back(0.05f * static_cast<float>(i), 1.0f, 0.2f);
-  ASSERT_TRUE(assign_nearest_origins(t).applied);
+  const auto rt = sample_by_nearest_origin(t, 1);
+  ASSERT_TRUE(rt.applied);
   std::size_t covered = 0;
-  for (const auto& o : t.origins) {
-    covered += o.count;
-    for (std::size_t i = o.first; i < o.first + o.count; ++i) {
-      const double near = std::hypot(
-          std::clamp(std::round(t.points[i].x() / 0.5) * 0.5, 0.0, 20.0) - t.points[i].x(), 1.0);
-      const auto& s = t.scanners[o.scanner];
+  for (std::size_t k = 0; k < rt.points.size(); ++k) {
+    covered += rt.points[k].size();
+    for (const auto& p : rt.points[k]) {
+      const double near =
+          std::hypot(std::clamp(std::round(p.x() / 0.5) * 0.5, 0.0, 20.0) - p.x(), 1.0);
+      const auto& s = t.scanners[k];
       // 1.5 m margin, plus the 0.25 m lookup cell (candidates are per cell centre).
-      EXPECT_LE(std::hypot(s.x() - t.points[i].x(), s.y() - t.points[i].y()), near + 1.5 + 0.4);
+      EXPECT_LE(std::hypot(s.x() - p.x(), s.y() - p.y()), near + 1.5 + 0.4);
     }
   }
   EXPECT_EQ(covered, t.points.size());
-  EXPECT_GT(t.origins.size(), 20u) << "the points spread over many positions";
+  EXPECT_GT(rt.positions_used, 20u) << "the points spread over many positions";
   PointCloud one;
   one.scanners = {{0, 0, 0}};
   one.points = {{1, 1, 1}};
-  EXPECT_FALSE(assign_nearest_origins(one).applied) << "one position: nothing to estimate";
+  EXPECT_FALSE(sample_by_nearest_origin(one, 1).applied) << "one position: nothing to estimate";
 }
 
 // A wall at x = 2.0 m between two rooms, points high on both far walls. From a position in the

@@ -16,18 +16,12 @@ std::string fmt(const char* f, double a, double b = 0, double c = 0) {
 
 }  // namespace
 
-CloudExtent extent_of(const std::vector<Eigen::Vector3f>& points) {
+CloudExtent extent_of(const cloud_io::LoadResult& loaded) {
   CloudExtent e;
-  Eigen::Vector3f lo = Eigen::Vector3f::Constant(INFINITY), hi = -lo;
-  for (const auto& p : points) {
-    if (!p.allFinite()) continue;
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-    e.empty = false;
-  }
+  e.empty = !(loaded.lo_m.array() <= loaded.hi_m.array()).all();
   if (!e.empty) {
-    e.lo_m = lo.cast<double>();
-    e.hi_m = hi.cast<double>();
+    e.lo_m = loaded.lo_m.cast<double>();
+    e.hi_m = loaded.hi_m.cast<double>();
   }
   return e;
 }

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "indoormap/cloud_io/load.hpp"
 #include "indoormap/core/voxel_geometry.hpp"
 
 namespace indoormap::app {
@@ -16,7 +17,7 @@ struct CloudExtent {
   bool empty = true;
   Eigen::Vector3d size_m() const { return hi_m - lo_m; }
 };
-CloudExtent extent_of(const std::vector<Eigen::Vector3f>& points);
+CloudExtent extent_of(const cloud_io::LoadResult& loaded);  ///< the bounds taken while loading
 
 /// A horizontal extent above this suggests a unit other than the one given (no indoor scan spans
 /// a kilometre; the project's clouds, the Jacobs scan and the simulated scenes span < 100 m).

@@ -129,6 +129,7 @@ void finish_summary(json& summary, const fs::path& out, std::vector<std::string>
 
 PipelineRun run_pipeline(const PipelineCli& cli, PipelineConfig& cfg, bool keep_input_points) {
   const auto t0 = std::chrono::steady_clock::now();
+  start_digests(cli.inputs);  // summary.json's provenance, hashed beside the run's work
   cfg.load.progress = load_progress(cli.quiet);
   cloud_io::LoadResult loaded = cloud_io::load_clouds(cli.inputs, cfg.load);
   cfg.load.progress = nullptr;  // ends the last file's bar line
@@ -148,7 +149,7 @@ PipelineRun map_loaded(cloud_io::LoadResult loaded, const PipelineCli& cli, Pipe
     loaded.cloud.scanners = cfg.scanners;
     loaded.cloud.origins.clear();
   }
-  const CloudExtent extent = extent_of(loaded.cloud.points);
+  const CloudExtent extent = extent_of(loaded);
   if (!cli.trajectory.empty()) add_trajectory(cli.trajectory, extent, loaded.cloud);
   run.scanner_source = loaded.cloud.scanners.empty() ? "estimated"
                        : !cli.trajectory.empty()     ? "trajectory"

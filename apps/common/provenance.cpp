@@ -4,12 +4,15 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <future>
 #include <map>
 #include <memory>
+#include <mutex>
 
 #include "indoormap/core/errors.hpp"
 #include "indoormap/version.hpp"
@@ -89,12 +92,16 @@ std::string sha256_hex(std::string_view bytes) {
   return h.hex();
 }
 
-std::string sha256_file(const fs::path& file) {
+namespace {
+
+// Hashes file, in 1 MiB chunks; stops early (returning "") once *stop is set.
+std::string sha256_file_until(const fs::path& file, const std::atomic<bool>* stop) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file.string(), "cannot be opened to compute its SHA-256");
   Sha256 h;
   std::vector<char> chunk(1 << 20);
   while (in) {
+    if (stop && stop->load(std::memory_order_relaxed)) return "";
     in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
     h.update(chunk.data(), static_cast<std::size_t>(in.gcount()));
   }
@@ -102,31 +109,97 @@ std::string sha256_file(const fs::path& file) {
   return h.hex();
 }
 
-std::vector<FileDigest> digest_inputs(const std::vector<std::string>& inputs) {
-  // A file is hashed once per process (pcd-to-map writes a summary per storey and one on top).
-  static std::map<std::string, FileDigest> cache;
-  std::vector<FileDigest> out;
-  auto add = [&](const fs::path& p) {
-    auto it = cache.find(p.string());
-    if (it == cache.end())
-      it = cache
-               .emplace(p.string(),
-                        FileDigest{p.string(), static_cast<std::uint64_t>(fs::file_size(p)),
-                                   sha256_file(p)})
-               .first;
-    out.push_back(it->second);
-  };
+FileDigest digest_of(const fs::path& p, const std::atomic<bool>* stop) {
+  return {p.string(), static_cast<std::uint64_t>(fs::file_size(p)), sha256_file_until(p, stop)};
+}
+
+// The files of the inputs: a file as itself, a directory as its regular files, sorted.
+std::vector<fs::path> input_files(const std::vector<std::string>& inputs) {
+  std::vector<fs::path> out;
   for (const auto& in : inputs) {
     std::error_code ec;
     if (fs::is_regular_file(in, ec)) {
-      add(in);
+      out.emplace_back(in);
     } else if (fs::is_directory(in, ec)) {
       std::vector<fs::path> files;
       for (const auto& e : fs::recursive_directory_iterator(in, ec))
         if (e.is_regular_file(ec)) files.push_back(e.path());
       std::sort(files.begin(), files.end());
-      for (const auto& f : files) add(f);
+      out.insert(out.end(), files.begin(), files.end());
     }
+  }
+  return out;
+}
+
+// Each file is hashed once per process (pcd-to-map writes a summary per storey and one on top),
+// on the calling thread or ahead of time by start_digests' worker. At exit the worker is told to
+// stop and joined: an app that fails early does not wait for the hash of a large cloud.
+struct DigestCache {
+  std::mutex mutex;
+  std::map<std::string, std::shared_future<FileDigest>> files;
+  std::atomic<bool> stop{false};
+  std::vector<std::future<void>> workers;
+  // OpenSSL frees its state at exit (atexit): initialised here, before this object is complete,
+  // its clean-up is registered first and so runs after this destructor has joined the worker.
+  DigestCache() { Sha256().hex(); }
+  ~DigestCache() {
+    stop = true;
+    for (auto& w : workers) w.wait();
+  }
+};
+
+DigestCache& digest_cache() {
+  static DigestCache cache;
+  return cache;
+}
+
+}  // namespace
+
+std::string sha256_file(const fs::path& file) {
+  return sha256_file_until(file, nullptr);
+}
+
+void start_digests(const std::vector<std::string>& inputs) {
+  DigestCache& c = digest_cache();
+  std::vector<std::pair<fs::path, std::promise<FileDigest>>> todo;
+  {
+    const std::lock_guard lock(c.mutex);
+    for (const auto& f : input_files(inputs)) {
+      if (c.files.count(f.string())) continue;
+      std::promise<FileDigest> done;
+      c.files.emplace(f.string(), done.get_future().share());
+      todo.emplace_back(f, std::move(done));
+    }
+    if (todo.empty()) return;
+    c.workers.push_back(std::async(std::launch::async, [&c, todo = std::move(todo)]() mutable {
+      for (auto& [file, done] : todo) try {
+          done.set_value(digest_of(file, &c.stop));
+        } catch (...) {
+          done.set_exception(std::current_exception());
+        }
+    }));
+  }
+}
+
+std::vector<FileDigest> digest_inputs(const std::vector<std::string>& inputs) {
+  DigestCache& c = digest_cache();
+  std::vector<FileDigest> out;
+  for (const auto& f : input_files(inputs)) {
+    std::shared_future<FileDigest> known;
+    {
+      const std::lock_guard lock(c.mutex);
+      if (auto it = c.files.find(f.string()); it != c.files.end()) known = it->second;
+    }
+    if (known.valid()) {
+      out.push_back(known.get());  // rethrows the worker's InputError
+      continue;
+    }
+    FileDigest d = digest_of(f, nullptr);
+    std::promise<FileDigest> p;
+    p.set_value(d);
+    const std::lock_guard lock(c.mutex);
+    c.files.emplace(f.string(), p.get_future().share());
+    out.push_back(std::move(d));
   }
   return out;
 }

@@ -36,6 +36,10 @@ struct FileDigest {
   std::string sha256;
 };
 
+/// Starts hashing the inputs' files on a background thread, so that digest_inputs later takes
+/// the digests instead of reading gigabytes after the run's work. Optional; safe to call again.
+void start_digests(const std::vector<std::string>& inputs);
+
 /// Digests of the inputs: a file as itself, a directory (a 3DTK scan folder) as every regular
 /// file in it and its sub-folders, sorted by path. Inputs that do not exist are skipped (the app
 /// has refused them before). Throws InputError when a file cannot be read.

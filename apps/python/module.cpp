@@ -146,6 +146,10 @@ py::dict run_pipeline(const py::object& cloud, const py::object& params, int sto
       throw BudgetError(in.path + ": " + std::to_string(in.points_read) +
                         " points exceed input.max_points = " + std::to_string(cfg.load.max_points));
     if (loaded.cloud.points.empty()) throw InputError(in.path, "no finite point");
+    for (const auto& p : loaded.cloud.points) {  // as load_clouds takes them
+      loaded.lo_m = loaded.lo_m.cwiseMin(p);
+      loaded.hi_m = loaded.hi_m.cwiseMax(p);
+    }
     loaded.inputs.push_back(in);
     cli.inputs = {in.path};
     py::gil_scoped_release free;

@@ -44,15 +44,9 @@ std::vector<std::int64_t> few_point_voxels(const std::vector<std::uint16_t>& cou
   return out;
 }
 
-}  // namespace
-
-GhostResult remove_ghost_voxels(VoxelGrid& g, const std::vector<Eigen::Vector3f>& points,
-                                const Eigen::Vector3d& scanner, const GhostParams& params) {
-  return remove_ghost_voxels_by_origin(g, std::vector<RaySource>{{points, scanner}}, params);
-}
-
-GhostResult remove_ghost_voxels_by_origin(VoxelGrid& g, const std::vector<RaySource>& sources,
-                                          const GhostParams& params) {
+/// The filter over sources whose every step-th point is a ray; counts scaled by stride.
+GhostResult filter_ghosts(VoxelGrid& g, const std::vector<RaySource>& sources, std::size_t step,
+                          std::size_t stride, const GhostParams& params) {
   validate(params);
   GhostResult res;
   std::size_t total = 0;
@@ -69,9 +63,6 @@ GhostResult remove_ghost_voxels_by_origin(VoxelGrid& g, const std::vector<RaySou
   // with the candidates and the ray density, not with the length of the rays.
   const std::vector<std::int64_t> candidates = few_point_voxels(g.counts, params.max_points);
   std::vector<int> passes(candidates.size(), 0);
-  // One stride over all sources: max_rays bounds the whole filter, whatever the number of scans.
-  const std::size_t stride = std::max<std::size_t>(
-      1, (total + params.max_rays - 1) / std::max<std::size_t>(params.max_rays, 1));
   const double scale = static_cast<double>(stride);
   // Enough passes to decide (counted up to this, like the saturating counter before).
   const int cap = static_cast<int>(std::min<double>(
@@ -86,7 +77,7 @@ GhostResult remove_ghost_voxels_by_origin(VoxelGrid& g, const std::vector<RaySou
   const double far_end_cells = g.to_cells(params.far_end_m);
   for (const auto& src : sources) {
     if (!src.scanner.allFinite()) continue;
-    const detail::RayFan fan(g, src.points, src.scanner, stride, g.to_cells(params.end_skip_m));
+    const detail::RayFan fan(g, src.points, src.scanner, step, g.to_cells(params.end_skip_m));
     res.rays += fan.size();
     for (std::size_t k = 0; k < candidates.size(); ++k) {
       ticker.tick();
@@ -107,6 +98,33 @@ GhostResult remove_ghost_voxels_by_origin(VoxelGrid& g, const std::vector<RaySou
     }
   }
   return res;
+}
+
+}  // namespace
+
+GhostResult remove_ghost_voxels(VoxelGrid& g, const std::vector<Eigen::Vector3f>& points,
+                                const Eigen::Vector3d& scanner, const GhostParams& params) {
+  return remove_ghost_voxels_by_origin(g, std::vector<RaySource>{{points, scanner}}, params);
+}
+
+std::size_t ghost_ray_stride(std::size_t total_points, const GhostParams& params) {
+  validate(params);
+  return std::max<std::size_t>(
+      1, (total_points + params.max_rays - 1) / std::max<std::size_t>(params.max_rays, 1));
+}
+
+GhostResult remove_ghost_voxels_by_origin(VoxelGrid& g, const std::vector<RaySource>& sources,
+                                          const GhostParams& params) {
+  std::size_t total = 0;
+  for (const auto& src : sources) total += src.points.size();
+  // One stride over all sources: max_rays bounds the whole filter, whatever the number of scans.
+  const std::size_t stride = ghost_ray_stride(total, params);
+  return filter_ghosts(g, sources, stride, stride, params);
+}
+
+GhostResult remove_presampled_ghost_voxels(VoxelGrid& g, const std::vector<RaySource>& samples,
+                                           std::size_t stride, const GhostParams& params) {
+  return filter_ghosts(g, samples, 1, std::max<std::size_t>(stride, 1), params);
 }
 
 }  // namespace indoormap::cloud

@@ -5,6 +5,7 @@
 // the output frame itself), including non-finite ones; load.cpp converts, drops and counts.
 // Readers check every size against the file size and the budget before allocating.
 #include <Eigen/Core>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <functional>
@@ -38,8 +39,12 @@ struct ReadInfo {
   std::uint64_t points = 0;  ///< points appended to out, including non-finite ones
   /// Scanner positions, in the same frame as the appended points.
   std::vector<Eigen::Vector3d> scanners;
-  int scans = 0;                      ///< 3DTK: scan files read
-  bool output_frame = false;          ///< true: points and scanners are already metres, z up
+  int scans = 0;              ///< 3DTK: scan files read
+  bool output_frame = false;  ///< true: points and scanners are already metres, z up
+  /// true: the points are already converted (metres, z up) and all finite, and lo / hi are their
+  /// bounds; runs must be empty. Spares load.cpp its own pass over millions of points.
+  bool compacted = false;
+  Eigen::Vector3f lo = Eigen::Vector3f::Constant(INFINITY), hi = -lo;
   std::vector<std::string> warnings;  ///< InputReport::warnings
   /// Which scanner saw which points (3DTK: one run per scan file): consecutive runs of appended
   /// points (raw, non-finite included) with the index of their scanner in `scanners`, or
@@ -49,6 +54,9 @@ struct ReadInfo {
   /// LAS: the offset subtracted from every point (source units; InputReport::source_offset).
   std::optional<Eigen::Vector3d> source_offset;
 };
+
+/// Input units and axes to the output frame (metres, right-handed, z up).
+Eigen::Vector3d to_output(const Eigen::Vector3d& p, const LoadOptions& options);
 
 /// Makes room for `n` more points, growing geometrically so that merging many files stays
 /// linear; `n` must already be checked against the budget.

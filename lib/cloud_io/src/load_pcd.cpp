@@ -1,7 +1,8 @@
-// PCD: our own header validation, then PCL's reader for the data section. Debian's PCL 1.13
-// crashes (or throws std::bad_alloc) on an empty file, a header without FIELDS, WIDTH*HEIGHT
-// overflowing, or POINTS far beyond the body, so PCL only ever sees a file whose header we
-// have checked against the file size. ASCII bodies are parsed here (see read_pcd_ascii).
+// PCD: our own header validation, then PCL's reader for binary_compressed data sections. Debian's
+// PCL 1.13 crashes (or throws std::bad_alloc) on an empty file, a header without FIELDS,
+// WIDTH*HEIGHT overflowing, or POINTS far beyond the body, so PCL only ever sees a file whose
+// header we have checked against the file size. ASCII and uncompressed binary bodies are read
+// here (read_pcd_ascii, read_pcd_binary).
 #include <pcl/PCLPointCloud2.h>
 #include <pcl/io/pcd_io.h>
 
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <map>
 
@@ -330,6 +332,66 @@ void read_pcd_ascii(const std::string& file, const PcdHeader& h, std::size_t fir
                                std::to_string(h.points) + " (truncated file?)");
 }
 
+// Uncompressed binary bodies are read here: points of point_size bytes back to back, fields in
+// FIELDS order (x y z are TYPE F, COUNT 1: check_fields). One pass from the file into the
+// output, in chunks of whole points, where PCL's reader would copy the body into a blob first
+// (twice the memory, and one more pass over it).
+void read_pcd_binary(const std::string& file, const PcdHeader& h, const LoadOptions& options,
+                     std::vector<Eigen::Vector3f>& out, ReadInfo& info) {
+  std::size_t offset[3] = {0, 0, 0}, at = 0;
+  bool is_double[3] = {false, false, false};
+  for (std::size_t i = 0; i < h.fields.size(); ++i) {
+    for (int a = 0; a < 3; ++a)
+      if (h.fields[i] == std::string(1, static_cast<char>('x' + a))) {
+        offset[a] = at;
+        is_double[a] = h.sizes[i] == 8;
+      }
+    at += static_cast<std::size_t>(h.sizes[i]) * static_cast<std::size_t>(h.counts[i]);
+  }
+  const auto step = static_cast<std::size_t>(h.point_size);
+  std::ifstream in(file, std::ios::binary);
+  if (!in || !in.seekg(static_cast<std::streamoff>(h.data_offset)))
+    throw InputError(file, "cannot be opened to read the PCD data section");
+  reserve_more(out, h.points);
+  // Converted, non-finite points dropped and bounds taken here, in the same pass (compacted).
+  const bool convert = options.unit_m != 1.0 || options.up_axis != UpAxis::kZ;
+  Eigen::Vector3f lo = info.lo, hi = info.hi;
+  const std::size_t per_chunk = std::max<std::size_t>(1, (std::size_t{4} << 20) / step);
+  std::vector<char> chunk(per_chunk * step);
+  for (std::uint64_t done = 0; done < h.points;) {
+    const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(per_chunk, h.points - done));
+    if (!in.read(chunk.data(), static_cast<std::streamsize>(n * step)))
+      throw InputError(file,
+                       "PCD data section ends after " +
+                           std::to_string(done + static_cast<std::uint64_t>(in.gcount()) / step) +
+                           " of POINTS " + std::to_string(h.points) + " (truncated file?)");
+    for (std::size_t k = 0; k < n; ++k) {
+      const char* p = chunk.data() + k * step;
+      Eigen::Vector3f v;
+      for (int a = 0; a < 3; ++a) {
+        if (is_double[a]) {
+          double d;
+          std::memcpy(&d, p + offset[a], sizeof d);
+          v[a] = static_cast<float>(d);
+        } else {
+          std::memcpy(&v[a], p + offset[a], sizeof(float));
+        }
+      }
+      if (convert) v = to_output(v.cast<double>(), options).cast<float>();
+      if (!v.allFinite()) continue;
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+      out.push_back(v);
+    }
+    done += n;
+    if (options.progress)
+      options.progress(file, static_cast<double>(done) / static_cast<double>(h.points));
+  }
+  info.compacted = true;
+  info.lo = lo;
+  info.hi = hi;
+}
+
 }  // namespace
 
 ReadInfo read_pcd(const std::string& file, const Budget& budget, const LoadOptions& options,
@@ -346,6 +408,10 @@ ReadInfo read_pcd(const std::string& file, const Budget& budget, const LoadOptio
     const auto header_lines =
         std::count(head.begin(), head.begin() + static_cast<std::ptrdiff_t>(h.data_offset), '\n');
     read_pcd_ascii(file, h, static_cast<std::size_t>(header_lines) + 1, options, out);
+    return info;
+  }
+  if (h.data == "binary") {
+    read_pcd_binary(file, h, options, out, info);
     return info;
   }
 

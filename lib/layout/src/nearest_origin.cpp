@@ -10,12 +10,15 @@
 
 namespace indoormap::layout {
 
-NearestOriginResult assign_nearest_origins(PointCloud& cloud) {
-  NearestOriginResult r;
+NearestOriginSamples sample_by_nearest_origin(const PointCloud& cloud, std::size_t stride) {
+  NearestOriginSamples r;
   const std::size_t ns = cloud.scanners.size();
+  stride = std::max<std::size_t>(stride, 1);
   if (ns < 2 || ns > 65535 || cloud.points.empty()) return r;
+  const std::size_t n = cloud.points.size();
   float x0 = std::numeric_limits<float>::max(), y0 = x0, x1 = -x0, y1 = -x0;
-  for (const auto& p : cloud.points) {
+  for (std::size_t i = 0; i < n; i += stride) {
+    const auto& p = cloud.points[i];
     if (!p.allFinite()) continue;
     x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x());
     y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
@@ -53,11 +56,10 @@ NearestOriginResult assign_nearest_origins(PointCloud& cloud) {
         cand.push_back(d2[k].second);
       first[static_cast<std::size_t>(row * w + col) + 1] = static_cast<std::uint32_t>(cand.size());
     }
-  const std::size_t n = cloud.points.size();
-  std::vector<std::uint16_t> label(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
+  r.points.resize(ns);
+  for (std::size_t i = 0; i < n; i += stride) {
     const auto& p = cloud.points[i];
-    if (!p.allFinite()) continue;  // any label: the voxel grid ignores it
+    if (!p.allFinite()) continue;  // the voxel grid ignores it too
     const auto col =
         std::clamp<std::int64_t>(static_cast<std::int64_t>((p.x() - x0) / cell), 0, w - 1);
     const auto row =
@@ -66,30 +68,10 @@ NearestOriginResult assign_nearest_origins(PointCloud& cloud) {
     const std::uint32_t k = first[c + 1] - first[c];
     // A fixed scramble of the point index picks among the candidates: deterministic.
     const std::uint64_t pick = (static_cast<std::uint64_t>(i) * 0x9E3779B97F4A7C15ULL) >> 40;
-    label[i] = cand[first[c] + static_cast<std::uint32_t>(pick % k)];
+    r.points[cand[first[c] + static_cast<std::uint32_t>(pick % k)]].push_back(p);
   }
-  // In-place counting sort (American flag): bucket k is [begin[k], begin[k + 1]).
-  std::vector<std::size_t> begin(ns + 1, 0);
-  for (const auto l : label) ++begin[l + 1u];
-  for (std::size_t k = 0; k < ns; ++k) begin[k + 1] += begin[k];
-  std::vector<std::size_t> next(begin.begin(), begin.end() - 1);
-  for (std::size_t k = 0; k < ns; ++k)
-    while (next[k] < begin[k + 1]) {
-      const std::size_t i = next[k];
-      const std::uint16_t l = label[i];
-      if (l == k) {
-        ++next[k];
-        continue;
-      }
-      const std::size_t j = next[l]++;
-      std::swap(cloud.points[i], cloud.points[j]);
-      std::swap(label[i], label[j]);
-    }
-  cloud.origins.clear();
-  for (std::size_t k = 0; k < ns; ++k)
-    if (begin[k + 1] > begin[k]) cloud.origins.push_back({begin[k], begin[k + 1] - begin[k], k});
+  for (const auto& v : r.points) r.positions_used += !v.empty();
   r.applied = true;
-  r.spans = cloud.origins.size();
   r.lookup_cell_m = cell;
   return r;
 }

@@ -1,44 +1,34 @@
 #include "indoormap/layout/pipeline.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <opencv2/imgproc.hpp>
 #include <span>
 
 #include "indoormap/layout/nearest_origin.hpp"
+#include "stopwatch.hpp"
 
 namespace indoormap::layout {
 
 namespace {
 
-class Stopwatch {
- public:
-  double lap_ms() {
-    const auto now = std::chrono::steady_clock::now();
-    const double ms = std::chrono::duration<double, std::milli>(now - last_).count();
-    last_ = now;
-    return ms;
-  }
-
- private:
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
+using detail::Stopwatch;
 
 // Rays need the scanner each point came from: one scanner sees everything; several need the
 // cloud's origin spans; where the input has none (a merged cloud with --scanner, a trajectory),
 // each point is taken as seen from its nearest position (nearest_origin.hpp) and the run says so.
-void run_ghost_filter(PointCloud& cloud, const cloud::GhostParams& params, MapResult& r) {
+void run_ghost_filter(const PointCloud& cloud, const cloud::GhostParams& params, MapResult& r) {
   if (cloud.scanners.size() == 1) {
     r.ghosts = cloud::remove_ghost_voxels(r.voxels, cloud.points, cloud.scanners[0], params);
     r.ghost_origins_exact = r.ghosts.applied;
     return;
   }
   if (!params.enabled || cloud.scanners.empty()) return;
-  const bool recorded = !cloud.origins.empty();
-  if (!recorded) {
-    if (!assign_nearest_origins(cloud).applied) {
+  if (cloud.origins.empty()) {
+    const std::size_t stride = cloud::ghost_ray_stride(cloud.points.size(), params);
+    const NearestOriginSamples est = sample_by_nearest_origin(cloud, stride);
+    if (!est.applied) {
       r.warnings.push_back("ghost filter skipped: " + std::to_string(cloud.scanners.size()) +
                            " scanner positions and no record of which point came from which");
       return;
@@ -46,6 +36,11 @@ void run_ghost_filter(PointCloud& cloud, const cloud::GhostParams& params, MapRe
     r.warnings.push_back("ghost filter: " + std::to_string(cloud.scanners.size()) +
                          " scanner positions and no record of which point came from which: "
                          "each point taken as seen from its nearest position");
+    std::vector<cloud::RaySource> samples;
+    for (std::size_t k = 0; k < est.points.size(); ++k)
+      if (!est.points[k].empty()) samples.push_back({est.points[k], cloud.scanners[k]});
+    r.ghosts = cloud::remove_presampled_ghost_voxels(r.voxels, samples, stride, params);
+    return;
   }
   std::vector<cloud::RaySource> sources;
   std::size_t covered = 0;
@@ -57,7 +52,7 @@ void run_ghost_filter(PointCloud& cloud, const cloud::GhostParams& params, MapRe
   }
   if (covered == cloud.points.size() && !sources.empty()) {
     r.ghosts = cloud::remove_ghost_voxels_by_origin(r.voxels, sources, params);
-    r.ghost_origins_exact = r.ghosts.applied && recorded;
+    r.ghost_origins_exact = r.ghosts.applied;
     return;
   }
   r.warnings.push_back("ghost filter skipped: " + std::to_string(cloud.scanners.size()) +

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "indoormap/core/errors.hpp"
+#include "stopwatch.hpp"
 
 namespace indoormap::layout {
 
@@ -133,11 +134,15 @@ StoreyMaps make_storey_maps(PointCloud cloud, const MapParams& params, const Sto
   validate(params);
   validate(sp);
   MapResult first;
+  detail::Stopwatch sw;
   first.level = level_cloud(cloud, params, first.warnings);
+  first.timings.push_back({"level", sw.lap_ms()});
   first.bounds = cloud::robust_bounds(cloud.points, params.voxel);
   first.voxels = cloud::voxelize(cloud.points, first.bounds, params.voxel);
+  first.timings.push_back({"voxelize", sw.lap_ms()});
   StoreyMaps out;
   out.storeys = detect_storeys(occupied_per_layer(first.voxels), first.voxels, sp);
+  first.timings.push_back({"storeys", sw.lap_ms()});
   const int n = static_cast<int>(out.storeys.size());
   if (only >= n)
     throw UsageError("--storey " + std::to_string(only) + ": the cloud has " + std::to_string(n) +
@@ -157,10 +162,13 @@ StoreyMaps make_storey_maps(PointCloud cloud, const MapParams& params, const Sto
     MapResult r;
     r.level = first.level;
     r.warnings = first.warnings;
+    r.timings = first.timings;  // level, voxelize and storeys of the whole cloud
+    sw.lap_ms();                // not the storeys mapped before
     PointCloud part = slice(cloud, st.lo_z_m, st.hi_z_m);
     if (part.points.empty()) continue;
     r.bounds = cloud::robust_bounds(part.points, params.voxel);
     r.voxels = cloud::voxelize(part.points, r.bounds, params.voxel);
+    r.timings.push_back({"storey_voxelize", sw.lap_ms()});
     map_voxelized(std::move(part), params, r);
     out.mapped.push_back(k);
     out.maps.push_back(std::move(r));

@@ -64,4 +64,13 @@ struct RaySource {
 GhostResult remove_ghost_voxels_by_origin(VoxelGrid& grid, const std::vector<RaySource>& sources,
                                           const GhostParams& params = {});
 
+/// The filter's subsampling of `total_points` points: every stride-th (max_rays over all).
+std::size_t ghost_ray_stride(std::size_t total_points, const GhostParams& params);
+
+/// The same with sources already subsampled: each holds every stride-th point of what its
+/// position saw, stride = ghost_ray_stride of the whole cloud (pass counts scaled by it). For
+/// origins estimated per point, where sampling first spares reordering the whole cloud.
+GhostResult remove_presampled_ghost_voxels(VoxelGrid& grid, const std::vector<RaySource>& samples,
+                                           std::size_t stride, const GhostParams& params = {});
+
 }  // namespace indoormap::cloud

@@ -10,6 +10,7 @@
 // LoadResult::source_offset, in double precision). Non-finite points are dropped and counted.
 // Formats, conventions and errors: docs/input-formats.md.
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -67,6 +68,9 @@ struct LoadResult {
   /// The local-frame offset of the LAS inputs (chosen by the first, shared by every later LAS
   /// input; other formats are not moved). Unset when no LAS input was read.
   std::optional<Eigen::Vector3d> source_offset;
+  /// Bounds of the merged points (all finite, output frame), taken while loading; lo_m > hi_m
+  /// only when there are no points.
+  Eigen::Vector3f lo_m = Eigen::Vector3f::Constant(INFINITY), hi_m = -lo_m;
 };
 
 /// Loads and merges every input. Throws InputError (names file and line) on bad input (missing,
