@@ -7,6 +7,7 @@
 
 #include "ghost_rays.hpp"
 #include "indoormap/core/errors.hpp"
+#include "indoormap/core/parallel.hpp"
 
 namespace indoormap::cloud {
 
@@ -79,12 +80,21 @@ GhostResult filter_ghosts(VoxelGrid& g, const std::vector<RaySource>& sources, s
     if (!src.scanner.allFinite()) continue;
     const detail::RayFan fan(g, src.points, src.scanner, step, g.to_cells(params.end_skip_m));
     res.rays += fan.size();
-    for (std::size_t k = 0; k < candidates.size(); ++k) {
-      ticker.tick();
-      if (passes[k] >= cap) continue;
-      const std::int64_t i = candidates[k], iz = i / nxy, iy = (i % nxy) / g.nx, ix = i % g.nx;
-      passes[k] += fan.passes(ix, iy, iz, params.min_layer_offset, far_end_cells, cap - passes[k]);
-    }
+    // Each candidate's count is its own: the candidates are split between the cores (the
+    // progress ticker stays on the calling thread's part, scaled to the whole).
+    const std::size_t nc = candidates.size();
+    parallel_parts(nc, 4096, [&](std::size_t k0, std::size_t k1) {
+      const bool first = k0 == 0;
+      const std::int64_t share = k1 > k0 ? static_cast<std::int64_t>(nc / (k1 - k0)) : 1;
+      for (std::size_t k = k0; k < k1; ++k) {
+        if (first) ticker.tick(share);
+        if (passes[k] >= cap) continue;
+        const std::int64_t i = candidates[k], iz = i / nxy, iy = (i % nxy) / g.nx, ix = i % g.nx;
+        passes[k] +=
+            fan.passes(ix, iy, iz, params.min_layer_offset, far_end_cells, cap - passes[k]);
+      }
+      return 0;
+    });
   }
   ticker.finish();
   for (std::size_t k = 0; k < candidates.size(); ++k) {

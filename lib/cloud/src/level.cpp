@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "indoormap/core/errors.hpp"
+#include "indoormap/core/parallel.hpp"
 #include "level_internal.hpp"
 
 namespace indoormap::cloud {
@@ -282,7 +283,10 @@ LevelResult estimate_level(const std::vector<Eigen::Vector3f>& points, const Lev
 
 void rotate(PointCloud& cloud, const Eigen::Matrix3d& rotation) {
   const Eigen::Matrix3f rf = rotation.cast<float>();
-  for (auto& p : cloud.points) p = rf * p;
+  parallel_parts(cloud.points.size(), 1 << 20, [&](std::size_t i0, std::size_t i1) {
+    for (std::size_t i = i0; i < i1; ++i) cloud.points[i] = rf * cloud.points[i];
+    return 0;
+  });
   for (auto& s : cloud.scanners) s = rotation * s;
 }
 

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "indoormap/core/errors.hpp"
+#include "indoormap/core/parallel.hpp"
 
 namespace indoormap::cloud {
 
@@ -113,21 +114,39 @@ Bounds3 robust_bounds(const std::vector<Eigen::Vector3f>& points, const VoxelPar
   const float hx = static_cast<float>(core.hi_m.x() + params.bounds_gap_m),
               hy = static_cast<float>(core.hi_m.y() + params.bounds_gap_m),
               hz = static_cast<float>(core.hi_m.z() + params.bounds_gap_m);
-  float mnx = hx, mny = hy, mnz = hz, mxx = lx, mxy = ly, mxz = lz;
-  bool any = false;
-  for (const auto& p : points) {
-    const float x = p.x(), y = p.y(), z = p.z();
-    if (!(x >= lx && x <= hx && y >= ly && y <= hy && z >= lz && z <= hz)) continue;
-    any = true;
-    mnx = std::min(mnx, x);
-    mny = std::min(mny, y);
-    mnz = std::min(mnz, z);
-    mxx = std::max(mxx, x);
-    mxy = std::max(mxy, y);
-    mxz = std::max(mxz, z);
+  struct Part {
+    float mnx, mny, mnz, mxx, mxy, mxz;
+    bool any = false;
+  };
+  // Two passes' worth of memory traffic: the points are split between the cores.
+  const auto parts = parallel_parts(points.size(), 1 << 20, [&](std::size_t i0, std::size_t i1) {
+    Part r{hx, hy, hz, lx, ly, lz};
+    for (std::size_t i = i0; i < i1; ++i) {
+      const float x = points[i].x(), y = points[i].y(), z = points[i].z();
+      if (!(x >= lx && x <= hx && y >= ly && y <= hy && z >= lz && z <= hz)) continue;
+      r.any = true;
+      r.mnx = std::min(r.mnx, x);
+      r.mny = std::min(r.mny, y);
+      r.mnz = std::min(r.mnz, z);
+      r.mxx = std::max(r.mxx, x);
+      r.mxy = std::max(r.mxy, y);
+      r.mxz = std::max(r.mxz, z);
+    }
+    return r;
+  });
+  Part all{hx, hy, hz, lx, ly, lz};
+  for (const Part& r : parts) {
+    if (!r.any) continue;
+    all = {std::min(all.mnx, r.mnx),
+           std::min(all.mny, r.mny),
+           std::min(all.mnz, r.mnz),
+           std::max(all.mxx, r.mxx),
+           std::max(all.mxy, r.mxy),
+           std::max(all.mxz, r.mxz),
+           true};
   }
-  if (!any) return b;  // infinite bounds: voxelize reports "no points inside"
-  const Eigen::Vector3f mn(mnx, mny, mnz), mx(mxx, mxy, mxz);
+  if (!all.any) return b;  // infinite bounds: voxelize reports "no points inside"
+  const Eigen::Vector3f mn(all.mnx, all.mny, all.mnz), mx(all.mxx, all.mxy, all.mxz);
   b.lo_m = mn.cast<double>();
   b.hi_m = mx.cast<double>();
   return b;
