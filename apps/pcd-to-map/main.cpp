@@ -2,6 +2,7 @@
 // Usage and outputs: docs/pcd-to-map.md.
 #include <chrono>
 #include <filesystem>
+#include <future>
 #include <iostream>
 #include <optional>
 #include <vector>
@@ -93,7 +94,10 @@ int run(int argc, char** argv) {
     if (!sub.empty()) fs::create_directories(dir);
     run.map = std::move(w.map);
     const auto& m = run.map;
-    std::vector<std::string> outputs = app::write_map_outputs(dir, run, cfg);
+    // The maps' pictures are drawn and encoded beside the other outputs (all read-only on run).
+    auto map_files =
+        std::async(std::launch::async, [&] { return app::write_map_outputs(dir, run, cfg); });
+    std::vector<std::string> outputs;
     app::ObjectOutputs what;
     what.csv = what.picture = false;
     what.room_ids = &w.rooms.object_rooms;
@@ -107,6 +111,8 @@ int run(int argc, char** argv) {
     if (route)
       for (const auto& f : route->summary.value("outputs", json::array()))
         outputs.push_back(f.get<std::string>());
+    std::vector<std::string> map_outputs = map_files.get();  // rethrows a failed write
+    outputs.insert(outputs.begin(), map_outputs.begin(), map_outputs.end());
     json summary = app::summary_json("pcd-to-map", run, cfg);
     summary["border"] = border_block;
     summary["rooms"] = rooms_block;

@@ -7,6 +7,7 @@
 
 #include "floor_holes.hpp"
 #include "indoormap/core/errors.hpp"
+#include "indoormap/core/parallel.hpp"
 
 namespace indoormap::layout {
 
@@ -284,12 +285,27 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
   for (std::size_t i = 0; i < floor_seen.size(); ++i) floor_seen[i] &= !occupied.data[i];
   std::vector<std::uint8_t> crossed(occupied.size(), 0);
   if (p.rays) {
-    for (const auto& s : scanners) {
-      const Eigen::Vector3d v = g.to_voxel_coords(s);
-      if (!v.allFinite()) continue;
-      ++r.positions;
-      r.rays += cast_from(v.head<2>(), col.low_seen, occupied, g.to_cells(p.max_range_m),
-                          g.to_cells(p.scanner_clear_m), crossed);
+    // The positions are split between the cores, each part marking its own copy of the grid;
+    // the copies are OR-ed in part order (the same map whatever the timing).
+    struct Part {
+      std::vector<std::uint8_t> crossed;
+      std::size_t positions = 0, rays = 0;
+    };
+    const auto parts = parallel_parts(scanners.size(), 1, [&](std::size_t k0, std::size_t k1) {
+      Part part{std::vector<std::uint8_t>(occupied.size(), 0)};
+      for (std::size_t k = k0; k < k1; ++k) {
+        const Eigen::Vector3d v = g.to_voxel_coords(scanners[k]);
+        if (!v.allFinite()) continue;
+        ++part.positions;
+        part.rays += cast_from(v.head<2>(), col.low_seen, occupied, g.to_cells(p.max_range_m),
+                               g.to_cells(p.scanner_clear_m), part.crossed);
+      }
+      return part;
+    });
+    for (const Part& part : parts) {
+      r.positions += part.positions;
+      r.rays += part.rays;
+      for (std::size_t i = 0; i < crossed.size(); ++i) crossed[i] |= part.crossed[i];
     }
   }
   if (r.positions == 0)
