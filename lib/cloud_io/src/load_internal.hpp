@@ -2,7 +2,8 @@
 // Private to im_cloud_io: the per-format readers behind load_clouds. No PCL here.
 //
 // Every reader appends raw points to `out` (input units and axes, except 3DTK which converts to
-// the output frame itself), including non-finite ones; load.cpp converts, drops and counts.
+// the output frame itself), including non-finite ones; load.cpp converts, drops and counts. A
+// reader may do that itself on the way (ReadInfo::compacted: the binary PCD reader).
 // Readers check every size against the file size and the budget before allocating.
 #include <Eigen/Core>
 #include <cmath>
