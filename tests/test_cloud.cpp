@@ -509,15 +509,27 @@ std::vector<Eigen::Vector3f> random_room_scan(const Eigen::Vector3d& scanner, in
   return pts;
 }
 
+// One room scanned from two positions (60 k and 40 k points) and the voxel grid of both.
+struct TwoPositionScan {
+  Eigen::Vector3d s1{2.5, 3.0, 1.2}, s2{6.0, 1.5, 1.6};
+  std::vector<Eigen::Vector3f> p1 = random_room_scan(s1, 60000, 11),
+                               p2 = random_room_scan(s2, 40000, 12), all;
+  VoxelGrid g0;
+  TwoPositionScan() {
+    all = p1;
+    all.insert(all.end(), p2.begin(), p2.end());
+    const VoxelParams vp;
+    g0 = voxelize(all, robust_bounds(all, vp), vp);
+  }
+};
+
 // The candidate-voxel filter gives the voxel-walking reference's result, voxel for voxel, with
 // one and with two scanner positions, with the ray budget and without.
 TEST(Ghosts, SameResultAsTheRayWalkingReference) {
-  const Eigen::Vector3d s1(2.5, 3.0, 1.2), s2(6.0, 1.5, 1.6);
-  const auto p1 = random_room_scan(s1, 60000, 11), p2 = random_room_scan(s2, 40000, 12);
-  std::vector<Eigen::Vector3f> all = p1;
-  all.insert(all.end(), p2.begin(), p2.end());
-  VoxelParams vp;
-  const VoxelGrid g0 = voxelize(all, robust_bounds(all, vp), vp);
+  const TwoPositionScan t;
+  const auto &s1 = t.s1, &s2 = t.s2;
+  const auto &p1 = t.p1, &p2 = t.p2, &all = t.all;
+  const VoxelGrid& g0 = t.g0;
   for (std::size_t max_rays : {std::size_t{1'000'000}, std::size_t{30'000}}) {
     GhostParams gp;
     gp.max_rays = max_rays;
@@ -548,12 +560,10 @@ TEST(Ghosts, SameResultAsTheRayWalkingReference) {
 // the same grid as the filter sampling them itself: what a merged cloud with estimated origins
 // relies on.
 TEST(Ghosts, PresampledSourcesGiveTheSameGrid) {
-  const Eigen::Vector3d s1(2.5, 3.0, 1.2), s2(6.0, 1.5, 1.6);
-  const auto p1 = random_room_scan(s1, 60000, 11), p2 = random_room_scan(s2, 40000, 12);
-  std::vector<Eigen::Vector3f> all = p1;
-  all.insert(all.end(), p2.begin(), p2.end());
-  VoxelParams vp;
-  const VoxelGrid g0 = voxelize(all, robust_bounds(all, vp), vp);
+  const TwoPositionScan t;
+  const auto &s1 = t.s1, &s2 = t.s2;
+  const auto &p1 = t.p1, &p2 = t.p2, &all = t.all;
+  const VoxelGrid& g0 = t.g0;
   GhostParams gp;
   gp.max_rays = 30'000;
   const std::size_t stride = ghost_ray_stride(all.size(), gp);

@@ -62,6 +62,24 @@ TEST(Provenance, DirectoriesAreEveryFileInThemSorted) {
   EXPECT_EQ(d[3].sha256, app::sha256_hex(""));
 }
 
+// Hashed ahead on the background thread (start_digests), the digests are the ones computed on
+// the spot, and a second start hashes nothing twice.
+TEST(Provenance, BackgroundDigestsAreTheOnesComputedOnTheSpot) {
+  const fs::path dir = test::scratch_dir();
+  std::string bytes(5 * (1 << 20) + 3, '\0');
+  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<char>(i * 7 % 253);
+  test::write_text(dir / "ahead.bin", bytes);
+  test::write_text(dir / "small.xyz", "1 2 3\n");
+  const std::vector<std::string> in = {(dir / "ahead.bin").string(), (dir / "small.xyz").string()};
+  app::start_digests(in);
+  app::start_digests(in);  // again: nothing started twice
+  const auto d = app::digest_inputs(in);
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_EQ(d[0].sha256, app::sha256_hex(bytes));
+  EXPECT_EQ(d[0].size_bytes, bytes.size());
+  EXPECT_EQ(d[1].sha256, app::sha256_hex("1 2 3\n"));
+}
+
 TEST(Provenance, JsonHoldsCommandLineStartVersionRevisionAndInputs) {
   const fs::path dir = test::scratch_dir();
   test::write_text(dir / "in.xyz", "1 1 1\n");
