@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 
 #include "indoormap/core/errors.hpp"
@@ -146,9 +147,10 @@ void CarmenReader::parse_flaser(CarmenScan& out) {
   for (int i = 0; i < n; ++i) {
     double r = 0.0;
     const std::string_view t = tokens_[2 + static_cast<std::size_t>(i)];
-    if (!parse_double(t, r) || r < 0.0)
+    // Stored as float: a finite double beyond float's range would become infinite.
+    if (!parse_double(t, r) || r < 0.0 || r > std::numeric_limits<float>::max())
       fail("FLASER range " + std::to_string(i + 1) +
-           " is not a finite non-negative number: " + quoted(t));
+           " is not a finite non-negative number (at most 3.4e38): " + quoted(t));
     out.ranges_m[static_cast<std::size_t>(i)] = static_cast<float>(r);
   }
   double v[kFieldsAfterRanges] = {};
