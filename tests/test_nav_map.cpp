@@ -267,3 +267,49 @@ TEST(Storeys, TwoStoreysFromTheSurfaceHistogram) {
   off.enabled = false;
   EXPECT_EQ(detect_storeys(occ, g, off).size(), 1u);
 }
+
+// Shadows (NavParams::shadow_max_width_m): a walled room, a scanner at (0.55, 1.05) m and the
+// front face of a pillar (3 cells, 0.3 m) 0.45 m in front of it; the floor is seen everywhere but
+// in the pillar's shadow, the far wall through it (from elsewhere). Floor holes off, so only the
+// shadow rule can free the floor behind the pillar. The pillar's unseen inside (one width behind
+// its face) stays unknown. Joined to a wall, the same face is no free-standing obstacle.
+TEST(NavMap, ShadowOfAFreeStandingPillarIsFreeNotItsInside) {
+  const double sx = 5.5, sy = 10.5;  // the scanner, in cells
+  const auto shadowed = [&](int x, int y) {
+    const double a = std::atan2(y + 0.5 - sy, x + 0.5 - sx);
+    return x > 10 && std::abs(a) < std::atan2(1.6, 4.5);
+  };
+  auto build = [&](bool joined) {
+    auto g = room();
+    for (int y = 1; y < 19; ++y)
+      for (int x = 1; x < 39; ++x)
+        if (!shadowed(x, y)) put(g, x, y, 0);
+    for (int z = 0; z < 25; ++z) {
+      for (int x = 0; x < 40; ++x) put(g, x, 0, z), put(g, x, 19, z);
+      for (int y = 0; y < 20; ++y) put(g, 0, y, z), put(g, 39, y, z);
+      for (int y = 9; y <= 11; ++y) put(g, 10, y, z);  // the pillar's face
+      if (joined)
+        for (int y = 12; y < 19; ++y) put(g, 10, y, z);  // a wall from it to the room's wall
+    }
+    return g;
+  };
+  NavParams p;
+  p.floor_hole_max_m2 = 0;
+  const std::vector<Eigen::Vector3d> scanner{{0.55, 1.05, 1.2}};
+  const NavResult r = build_nav_map(build(false), 0.05, scanner, p);
+  EXPECT_EQ(at(r, 10, 10), Cell::kWall);
+  EXPECT_EQ(at(r, 11, 10), Cell::kUnknown) << "the pillar's inside";
+  // Up to the line joining the side rays' ends: they meet the side walls at x = 3.6 m.
+  for (int x : {15, 20, 30}) EXPECT_EQ(at(r, x, 10), Cell::kFree) << x << ": behind the pillar";
+  EXPECT_GT(r.cells_shadow_filled, 100);
+  NavParams off = p;
+  off.shadow_max_width_m = 0;
+  const NavResult none = build_nav_map(build(false), 0.05, scanner, off);
+  EXPECT_EQ(at(none, 30, 10), Cell::kUnknown);
+  EXPECT_EQ(none.cells_shadow_filled, 0);
+  const NavResult joined = build_nav_map(build(true), 0.05, scanner, p);
+  EXPECT_EQ(at(joined, 30, 10), Cell::kUnknown) << "a wall's end is no pillar";
+  NavParams bad;
+  bad.shadow_min_depth_m = -1;
+  EXPECT_THROW(validate(bad), UsageError);
+}

@@ -56,7 +56,15 @@ struct NavParams {
   /// to the farthest column in the bin that holds a point below height_m (floor or body band),
   /// stopping at the first occupied cell. false: observed floor alone.
   bool rays = true;
-  double max_range_m = 30.0;     ///< columns farther from the position cast no ray
+  double max_range_m = 30.0;  ///< columns farther from the position cast no ray
+  /// Shadows of free-standing obstacles: where the rays of one position stop on an obstacle whose
+  /// occupied cells (8-connected) span at most shadow_max_width_m (a pillar, a bin, a chair) and
+  /// the rays on both its sides go on at least shadow_min_depth_m beyond it, the floor behind it
+  /// (from one obstacle width behind its front to the line joining the side rays' ends) is free.
+  /// A wall seen end-on, or a cabinet touching it, belongs to the whole wall. Inferred cells:
+  /// free in the map, not the layout's evidence. docs/pipeline.md, "Shadows". 0 m wide: off.
+  double shadow_max_width_m = 0.8;
+  double shadow_min_depth_m = 1.0;
   double scanner_clear_m = 0.3;  ///< occupied cells this close to a position (its tripod) pass
 };
 
@@ -70,11 +78,12 @@ struct NavResult {
   Grid<std::uint8_t> observed_free;
   double body_lo_m = 0.0, body_hi_m = 0.0;  ///< the body band, map-frame heights
   std::int64_t cells_occupied = 0, cells_free = 0, cells_unknown = 0;
-  std::int64_t cells_floor_seen = 0;   ///< free cells whose floor holds points
-  std::int64_t cells_ray_free = 0;     ///< free cells known from rays alone
-  std::int64_t cells_hole_filled = 0;  ///< free cells of filled floor holes (neither of those)
-  std::int64_t specks_dropped = 0;     ///< body-band columns with points below the evidence rule
-  std::size_t positions = 0;           ///< scanner positions used for rays
+  std::int64_t cells_floor_seen = 0;     ///< free cells whose floor holds points
+  std::int64_t cells_ray_free = 0;       ///< free cells known from rays alone
+  std::int64_t cells_shadow_filled = 0;  ///< free cells behind narrow obstacles (none of those)
+  std::int64_t cells_hole_filled = 0;    ///< free cells of filled floor holes (none of those)
+  std::int64_t specks_dropped = 0;       ///< body-band columns with points below the evidence rule
+  std::size_t positions = 0;             ///< scanner positions used for rays
   std::size_t rays = 0;
   std::vector<std::string> warnings;
 };
