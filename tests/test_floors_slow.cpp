@@ -230,6 +230,38 @@ TEST(FloorsApp, TwoStoreysEachMappedOnItsOwn) {
   }
 }
 
+// The 12-room building of scripts/floor_eval.sh (seed 221, scene-sim's default step), from its
+// 3DTK scans: a pillar 0.8 m in front of room 9's scanner hides the floor all the way to the
+// room's door, and no other position sees it. The pillar's shadow (NavParams::shadow_max_width_m)
+// opens it: every door open, every position reachable, seen-free IoU >= 0.9, as map-eval scores
+// map.pgm; without the shadow rule that door stays closed. The storey is levelled by its floor
+// (the ceilings of its rooms lie at several heights).
+TEST(FloorsApp, TwelveRoomsPillarShadowedDoorOpens) {
+  const fs::path dir = test::scratch_dir();
+  const auto sim =
+      run_app("scene-sim", "--random --rooms 12 --seed 221 --3dtk -q -o " + (dir / "sim").string());
+  ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  const std::string in = (dir / "sim" / "3dtk").string();
+  const auto a = run_app("pcd-to-map", in + " -q -o " + (dir / "out").string());
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  const json e = map_eval(dir / "sim", dir / "out");
+  EXPECT_EQ(e["floor"]["doors"]["doors"].get<int>(), 12);
+  EXPECT_EQ(e["floor"]["doors"]["open_share"].get<double>(), 1.0) << e["floor"]["doors"];
+  EXPECT_TRUE(e["floor"]["reachability"]["all_reachable"].get<bool>());
+  EXPECT_GE(e["floor"]["map"]["seen_free_iou"]["iou"].get<double>(), 0.9);
+  const json s = read_json(dir / "out" / "summary.json");
+  EXPECT_GT(s["nav_map"]["cells"]["free_shadows"].get<int>(), 0);
+  EXPECT_NE(s["levelling"]["note"].get<std::string>().find("floor plane only"), std::string::npos);
+
+  const fs::path cfg = dir / "no_shadows.yaml";
+  std::ofstream(cfg) << "nav:\n  shadow_max_width_m: 0\n";
+  const auto b =
+      run_app("pcd-to-map", in + " -c " + cfg.string() + " -q -o " + (dir / "off").string());
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  const json off = map_eval(dir / "sim", dir / "off");
+  EXPECT_LT(off["floor"]["doors"]["open_share"].get<double>(), 1.0) << "room 9's door";
+}
+
 TEST(FloorsApp, OfficeLampsAreNoObstaclesTablesAndChairsAre) {
   const fs::path office = fs::path(INDOORMAP_SOURCE_DIR) / "clouds" / "office";
   const fs::path out = test::scratch_dir() / "office";

@@ -159,6 +159,12 @@ PlaneFit fit_plane_least_squares(const std::vector<Eigen::Vector3d>& points) {
   double ss = 0.0;
   for (const auto& q : points) ss += std::pow(f.normal.dot(q) - f.offset_m, 2);
   f.rms_m = std::sqrt(ss / static_cast<double>(points.size()));
+  std::vector<double> xs, ys;
+  xs.reserve(points.size());
+  ys.reserve(points.size());
+  for (const auto& q : points) xs.push_back(q.x()), ys.push_back(q.y());
+  f.extent_m = std::hypot(percentile(xs, 98.0) - percentile(xs, 2.0),
+                          percentile(ys, 98.0) - percentile(ys, 2.0));
   return f;
 }
 
@@ -248,7 +254,19 @@ LevelResult estimate_level(const std::vector<Eigen::Vector3f>& points, const Lev
   if (r.floor.found && r.ceiling.found) {
     const double angle =
         rad2deg(std::acos(std::clamp(r.floor.normal.dot(r.ceiling.normal), -1.0, 1.0)));
-    if (angle <= params.max_normal_disagreement_deg) {
+    // Where the two disagree by more than the tilt that moves the floor's far ends by
+    // inlier_m (0.06 degrees across a 30 m building), a ceiling that fits its points worse than
+    // the floor does (larger RMS) is no single flat surface: the rooms of a building at several
+    // heights, which tilted the 12-room building 0.33-0.63 degrees off its floor and put the
+    // floor's far end 7 cm high. Then the floor alone decides.
+    const double level_deg = rad2deg(std::atan2(params.inlier_m, r.floor.extent_m));
+    if (angle > level_deg && angle <= params.max_normal_disagreement_deg &&
+        r.ceiling.rms_m > r.floor.rms_m) {
+      up = r.floor.normal;
+      r.note = "floor plane only (the ceiling plane, " + std::to_string(angle) +
+               " deg off the floor, fits its points worse: RMS " + std::to_string(r.ceiling.rms_m) +
+               " m against " + std::to_string(r.floor.rms_m) + " m)";
+    } else if (angle <= params.max_normal_disagreement_deg) {
       up = (r.floor.normal * static_cast<double>(r.floor.inliers) +
             r.ceiling.normal * static_cast<double>(r.ceiling.inliers))
                .normalized();

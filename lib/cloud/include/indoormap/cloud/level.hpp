@@ -53,6 +53,7 @@ struct PlaneFit {
   double offset_m = 0.0;                              ///< plane: normal . p = offset_m
   std::size_t inliers = 0;                            ///< among the sampled points
   double rms_m = 0.0;                                 ///< RMS distance of the inliers
+  double extent_m = 0.0;  ///< the diagonal of the inliers' 2nd-98th percentile x / y box
 };
 
 /// What a levelling plane rests on (level_support).
