@@ -16,12 +16,13 @@ using namespace indoormap::layout;
 
 namespace {
 
-// 40 x 20 cells of 0.1 m, 30 layers of 0.1 m; floor at z 0.05 (layer 0).
-cloud::VoxelGrid room() {
+// nx x ny cells of cell_m, 30 layers; by default 40 x 20 cells of 0.1 m, floor at z 0.05
+// (layer 0).
+cloud::VoxelGrid room(double cell_m = 0.1, int nx = 40, int ny = 20) {
   cloud::VoxelGrid g;
-  g.cell_m = 0.1;
-  g.nx = 40;
-  g.ny = 20;
+  g.cell_m = cell_m;
+  g.nx = nx;
+  g.ny = ny;
   g.nz = 30;
   g.counts.assign(static_cast<std::size_t>(g.voxel_count()), 0);
   return g;
@@ -90,16 +91,40 @@ TEST(NavMap, DoorwayVeilOverSeenFloorIsNoObstacle) {
       for (int z : {a, a + 4, a + 8}) put(g, x, y, z, 1);
     }
   for (int z : {1, 3, 5, 7, 9}) put(g, 30, 10, z, 1);  // the sparse leg
+  // Two cells beside the veil, five mixed pixels at unrelated heights with no point in their
+  // 3 x 3 neighbourhood: part of the sparse veil, not a leg.
+  for (int z : {1, 4, 7, 9, 11}) put(g, 11, 10, z, 1);
   const NavResult r = build_nav_map(g, 0.05, {}, NavParams{});
   for (int x = 5; x < 10; ++x)
     for (int y = 8; y < 12; ++y) EXPECT_EQ(at(r, x, y), Cell::kFree) << x << "," << y;
+  EXPECT_EQ(at(r, 11, 10), Cell::kFree) << "a stray column of the veil";
   EXPECT_EQ(at(r, 30, 10), Cell::kWall) << "a lone column of points is a leg";
-  EXPECT_EQ(r.specks_dropped, 20);
+  EXPECT_EQ(r.specks_dropped, 21);
   // When the ghost filter ran with every point's own origin it has cleared real veils before;
   // the rule stands aside.
   const NavResult with_position = build_nav_map(g, 0.05, {{2.05, 1.05, 1.0}}, NavParams{}, true);
   EXPECT_EQ(at(with_position, 7, 9), Cell::kWall);
   EXPECT_EQ(with_position.specks_dropped, 0);
+}
+
+// At 5 cm layers: a column of five mixed pixels three of which fill neighbouring layers (15 cm,
+// less than nav.min_column_m) beside a doorway veil is part of it; a leg filling five
+// neighbouring layers stands.
+TEST(NavMap, VeilColumnWithAShortRunOfLayersIsNoLeg) {
+  cloud::VoxelGrid g = room(0.05, 20, 20);
+  for (int y = 0; y < 20; ++y)
+    for (int x = 0; x < 20; ++x) put(g, x, y, 0);
+  for (int x = 5; x < 10; ++x)
+    for (int y = 8; y < 12; ++y) {
+      const int a = (x + y) % 2 ? 3 : 5;
+      for (int z : {a, a + 5, a + 10}) put(g, x, y, z, 1);
+    }
+  for (int z : {3, 10, 11, 12, 18}) put(g, 11, 10, z, 1);
+  for (int z = 3; z < 8; ++z) put(g, 16, 10, z, 1);
+  const NavResult r = build_nav_map(g, 0.025, {}, NavParams{});
+  EXPECT_EQ(at(r, 11, 10), Cell::kFree) << "five points, but a veil's";
+  EXPECT_EQ(at(r, 7, 9), Cell::kFree);
+  EXPECT_EQ(at(r, 16, 10), Cell::kWall) << "the leg";
 }
 
 // Floor holes: a walled room (walls at x 0 and 39, y 0 and 19) with its floor seen but for a
@@ -145,6 +170,27 @@ TEST(NavMap, FloorHolesBetweenRingsFilledCabinetAndShaftNot) {
   NavParams off;
   off.floor_hole_max_m2 = 0;
   EXPECT_EQ(build_nav_map(g, 0.05, {}, off).cells_hole_filled, 0);
+}
+
+// Without any position, a gap along a wall (rows 15-18, x 10-29: the wall above it, floor below
+// and at its ends; the floor's 3 x 3 closing takes a row off it, so about half its border is
+// free) is a floor hole; at the share asked with rays (0.75) it is not.
+TEST(NavMap, FloorHoleAlongAWallWithoutPositions) {
+  cloud::VoxelGrid g = room();
+  for (int y = 0; y < 20; ++y)
+    for (int x = 0; x < 40; ++x) {
+      if (x == 0 || x == 39 || y == 0 || y == 19)
+        for (int z = 0; z < 25; ++z) put(g, x, y, z);
+      else if (!(y >= 15 && x >= 10 && x <= 29))
+        put(g, x, y, 0);
+    }
+  const NavResult r = build_nav_map(g, 0.05, {}, NavParams{});
+  EXPECT_EQ(at(r, 20, 16), Cell::kFree);
+  EXPECT_EQ(at(r, 20, 18), Cell::kFree);
+  EXPECT_GT(r.cells_hole_filled, 40);
+  NavParams strict;
+  strict.floor_hole_min_free_share_no_rays = strict.floor_hole_min_free_share;
+  EXPECT_EQ(at(build_nav_map(g, 0.05, {}, strict), 20, 18), Cell::kUnknown);
 }
 
 // Two positions 10 m apart: each point goes to its nearest (the other is more than 1.5 m

@@ -156,6 +156,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("nav", "floor_closing_cells", nv.floor_closing_cells);
   f("nav", "floor_hole_max_m2", nv.floor_hole_max_m2);
   f("nav", "floor_hole_min_free_share", nv.floor_hole_min_free_share);
+  f("nav", "floor_hole_min_free_share_no_rays", nv.floor_hole_min_free_share_no_rays);
   f("nav", "shadow_max_width_m", nv.shadow_max_width_m);
   f("nav", "shadow_min_depth_m", nv.shadow_min_depth_m);
   f("nav", "floor_max_offset_m", nv.floor_max_offset_m);

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <opencv2/imgproc.hpp>
 
 #include "floor_holes.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/core/parallel.hpp"
+#include "rays.hpp"
 
 namespace indoormap::layout {
 
@@ -33,6 +35,8 @@ void validate(const NavParams& p) {
           "nav.floor_hole_max_m2: must be >= 0");
   require(p.floor_hole_min_free_share >= 0 && p.floor_hole_min_free_share <= 1,
           "nav.floor_hole_min_free_share: must be in [0, 1]");
+  require(p.floor_hole_min_free_share_no_rays >= 0 && p.floor_hole_min_free_share_no_rays <= 1,
+          "nav.floor_hole_min_free_share_no_rays: must be in [0, 1]");
   require(std::isfinite(p.max_range_m) && p.max_range_m > 0, "nav.max_range_m: must be > 0");
   require(std::isfinite(p.scanner_clear_m) && p.scanner_clear_m >= 0,
           "nav.scanner_clear_m: must be >= 0");
@@ -128,38 +132,57 @@ Columns scan_columns(const cloud::VoxelGrid& g, std::int64_t floor_lo, std::int6
 // body-band points. floor: the seen floor, or empty when the ghost filter ran with every point's
 // own origin (then no veil is left). Where the floor below the column was seen, the neighbours
 // must hold a point within one layer of one of the column's own: a far table top or a wall row
-// is level across its cells. And a scatter column (seen floor around, no three consecutive
-// layers) with two scatter neighbours at other heights is no obstacle at all: the veil of mixed
-// pixels in a doorway, points at random heights over a floor seen through them.
-Grid<std::uint8_t> occupied_columns(const Columns& col, const std::vector<std::uint8_t>& floor,
-                                    int w, int h, const NavParams& p, std::int32_t min_span,
-                                    std::int64_t& specks) {
-  Grid<std::uint8_t> occupied(w, h, 0);
-  const auto seen = [&](std::size_t i) { return !floor.empty() && floor[i]; };
-  // Scatter: no three consecutive layers hold points, over seen floor that goes on in all four
-  // directions (a wall's face has its unseen inside on one side).
-  std::vector<std::uint8_t> scatter(occupied.size(), 0);
+// is level across its cells. And a scatter column (seen floor around, no min_span consecutive
+// layers) with two scatter neighbours at other heights, or two such veil columns within two
+// cells, is no obstacle at all, nor a surface's neighbour: the veil of mixed pixels in a
+// doorway, points at random heights over a floor seen through them.
+// Each layer within one of its own, set.
+std::uint64_t spread(std::uint64_t b) {
+  return b | (b << 1) | (b >> 1);
+}
+
+// Scatter columns: no min_span consecutive layers hold points (no piece of surface min_column_m
+// tall: five mixed pixels at random heights may well fill three neighbouring 5 cm layers), over
+// seen floor that goes on in all four directions (a wall's face has its unseen inside on one
+// side).
+std::vector<std::uint8_t> scatter_columns(const Columns& col,
+                                          const std::function<bool(std::size_t)>& seen, int w,
+                                          int h, std::int32_t min_span) {
+  const auto continuous = [&](std::uint64_t b) {
+    std::uint64_t run = b;
+    for (std::int32_t k = 1; k < min_span && k < 64; ++k) run &= b << k;
+    return run != 0;
+  };
+  std::vector<std::uint8_t> scatter(static_cast<std::size_t>(w) * h, 0);
+  const auto wu = static_cast<std::size_t>(w);
   for (int row = 1; row + 1 < h; ++row)
     for (int c = 1; c + 1 < w; ++c) {
       const std::size_t i = static_cast<std::size_t>(row) * w + c;
-      const auto wu = static_cast<std::size_t>(w);
-      const std::uint64_t b = col.bits[i];
-      scatter[i] = col.lo[i] >= 0 && !(b & (b << 1) & (b << 2)) && seen(i) && seen(i - 1) &&
+      scatter[i] = col.lo[i] >= 0 && !continuous(col.bits[i]) && seen(i) && seen(i - 1) &&
                    seen(i + 1) && seen(i - wu) && seen(i + wu);
     }
-  const auto spread = [](std::uint64_t b) { return b | (b << 1) | (b >> 1); };
-  // Veils first: a scatter column with two scatter neighbours at other heights.
-  std::vector<std::uint8_t> veil(occupied.size(), 0);
+  return scatter;
+}
+
+// Veil columns: scatter columns with two scatter neighbours at other heights; then, a veil being
+// sparse, every scatter column with two such veil columns within two cells (a column of five
+// mixed pixels in a doorway whose nearest neighbours hold no point). A leg seen every other layer
+// stands apart from any veil.
+std::vector<std::uint8_t> veil_columns(const Columns& col, const std::vector<std::uint8_t>& scatter,
+                                       int w, int h) {
+  const auto index = [&](int c, int row) { return static_cast<std::size_t>(row) * w + c; };
+  const auto inside = [&](int c, int row) { return c >= 0 && row >= 0 && c < w && row < h; };
+  std::vector<std::uint8_t> veil(scatter.size(), 0);
   for (int row = 0; row < h; ++row)
     for (int c = 0; c < w; ++c) {
-      const std::size_t i = static_cast<std::size_t>(row) * w + c;
+      const std::size_t i = index(c, row);
       if (!scatter[i]) continue;
       const std::uint64_t near = spread(col.bits[i]);
       int scattered = 0;
       for (int dr = -1; dr <= 1; ++dr)
         for (int dc = -1; dc <= 1; ++dc) {
-          if ((!dr && !dc) || !occupied.contains(c + dc, row + dr)) continue;
-          const std::size_t j = static_cast<std::size_t>(row + dr) * w + c + dc;
+          if ((!dr && !dc) || !inside(c + dc, row + dr)) continue;
+          const std::size_t j = index(c + dc, row + dr);
           // Columns at the same heights (each layer within one of the other's) are pieces of
           // one sparse surface, not scatter.
           const bool same = !(col.bits[j] & ~near) && !(col.bits[i] & ~spread(col.bits[j]));
@@ -167,8 +190,29 @@ Grid<std::uint8_t> occupied_columns(const Columns& col, const std::vector<std::u
         }
       veil[i] = scattered >= 2;
     }
-  // Then the obstacles; a veil column is no neighbour of a surface (a speck among veil columns
-  // at its own height is part of the veil, not of a table top).
+  std::vector<std::uint8_t> out(veil);
+  for (int row = 0; row < h; ++row)
+    for (int c = 0; c < w; ++c) {
+      if (!scatter[index(c, row)] || veil[index(c, row)]) continue;
+      int veils = 0;
+      for (int dr = -2; dr <= 2; ++dr)
+        for (int dc = -2; dc <= 2; ++dc)
+          veils += inside(c + dc, row + dr) && veil[index(c + dc, row + dr)];
+      out[index(c, row)] = veils >= 2;
+    }
+  return out;
+}
+
+Grid<std::uint8_t> occupied_columns(const Columns& col, const std::vector<std::uint8_t>& floor,
+                                    int w, int h, const NavParams& p, std::int32_t min_span,
+                                    std::int64_t& specks) {
+  Grid<std::uint8_t> occupied(w, h, 0);
+  const std::function<bool(std::size_t)> seen = [&](std::size_t i) {
+    return !floor.empty() && floor[i];
+  };
+  const auto veil = veil_columns(col, scatter_columns(col, seen, w, h, min_span), w, h);
+  // A veil column is no obstacle, nor a surface's neighbour (a speck among veil columns at its
+  // own height is part of the veil, not of a table top).
   for (int row = 0; row < h; ++row)
     for (int c = 0; c < w; ++c) {
       const std::size_t i = static_cast<std::size_t>(row) * w + c;
@@ -204,250 +248,6 @@ std::vector<std::uint8_t> drops(const cloud::VoxelGrid& g, double floor_z_m) {
     for (std::size_t i = 0; i < d.size(); ++i) d[i] |= layer[i] != 0;
   }
   return d;
-}
-
-// fill_shadows' limits, in cells.
-struct ShadowLimits {
-  double max_width_cells = 0.0;  ///< 0: no shadow filled
-  double min_depth_cells = 0.0;
-  /// 1 on the occupied cells of free-standing obstacles: 8-connected pieces at most
-  /// max_width_cells across (bounding box). A wall seen end-on is narrow but belongs to the
-  /// whole wall; so does a cabinet standing against it.
-  std::vector<std::uint8_t> compact;
-};
-
-// ShadowLimits::compact of an occupancy grid.
-std::vector<std::uint8_t> compact_obstacles(const Grid<std::uint8_t>& occupied, double max_cells) {
-  std::vector<std::uint8_t> out(occupied.size(), 0);
-  if (max_cells <= 0.0 || occupied.size() == 0) return out;
-  cv::Mat m(occupied.height, occupied.width, CV_8U,
-            const_cast<std::uint8_t*>(occupied.data.data())),  // read only
-      labels, stats, centroids;
-  const int n = cv::connectedComponentsWithStats(m, labels, stats, centroids, 8, CV_32S);
-  std::vector<std::uint8_t> small(static_cast<std::size_t>(n), 0);
-  for (int l = 1; l < n; ++l)
-    small[static_cast<std::size_t>(l)] =
-        std::max(stats.at<int>(l, cv::CC_STAT_WIDTH), stats.at<int>(l, cv::CC_STAT_HEIGHT)) <=
-        max_cells;
-  for (int r = 0; r < occupied.height; ++r)
-    for (int c = 0; c < occupied.width; ++c)
-      out[static_cast<std::size_t>(r) * occupied.width + c] =
-          small[static_cast<std::size_t>(labels.at<int>(r, c))];
-  return out;
-}
-
-// One ray of cast_from: where it ended (cells from the position) and whether an occupied cell
-// stopped it before the farthest low-seen column of its bin.
-struct RayEnd {
-  float end = 0.0f;
-  bool blocked = false;
-  float reach = 0.0f;  ///< the farthest low-seen column of the bin
-};
-
-// Walks from the position along angle a up to len cells, marking the cells crossed; stops at the
-// first occupied cell beyond clear_cells. Steps of a quarter cell: simple, and it visits every
-// cell a ray crosses but for corner grazes (the neighbouring bins cover those).
-RayEnd walk(const Eigen::Vector2d& s, double a, double from, double len,
-            const Grid<std::uint8_t>& occupied, double clear_cells,
-            std::vector<std::uint8_t>& marked) {
-  const int w = occupied.width, h = occupied.height;
-  const double dx = std::cos(a), dy = std::sin(a);
-  int last = -1;
-  for (double t = from; t <= len; t += 0.25) {
-    const int c = static_cast<int>(std::floor(s.x() + t * dx));
-    const int r = static_cast<int>(std::floor(s.y() + t * dy));
-    if (c < 0 || r < 0 || c >= w || r >= h) return {static_cast<float>(t), false};
-    const int idx = r * w + c;
-    if (idx == last) continue;
-    last = idx;
-    if (occupied.data[static_cast<std::size_t>(idx)] && t > clear_cells)
-      return {static_cast<float>(t), true};
-    marked[static_cast<std::size_t>(idx)] = 1;
-  }
-  return {static_cast<float>(len), false};
-}
-
-// One ray of a shadow, from t0 cells on along u: every cell up to len (the line joining the
-// side rays' ends), and beyond it up to the bin's own reach only as far as the last cell whose
-// floor was seen: the unknown cells of a doorway between the shadow and the floor seen through
-// it from elsewhere, not the inside of a wall whose face the obstacle hid. Stops at the first
-// occupied cell. Returns the cells marked.
-std::size_t walk_shadow(const Eigen::Vector2d& s, const Eigen::Vector2d& u, double t0, double len,
-                        double reach, const Grid<std::uint8_t>& occupied,
-                        const std::vector<std::uint8_t>& floor_seen,
-                        std::vector<std::uint8_t>& shadow) {
-  const int w = occupied.width, h = occupied.height;
-  std::vector<std::size_t> cells;
-  std::size_t keep = 0;
-  int last = -1;
-  for (double t = t0; t <= std::max(len, reach); t += 0.25) {
-    const int c = static_cast<int>(std::floor(s.x() + t * u.x()));
-    const int r = static_cast<int>(std::floor(s.y() + t * u.y()));
-    if (c < 0 || r < 0 || c >= w || r >= h) break;
-    const int idx = r * w + c;
-    if (idx == last) continue;
-    last = idx;
-    const auto i = static_cast<std::size_t>(idx);
-    if (occupied.data[i]) break;
-    cells.push_back(i);
-    if (t <= len || floor_seen[i]) keep = cells.size();
-  }
-  for (std::size_t k = 0; k < keep; ++k) shadow[cells[k]] = 1;
-  return keep;
-}
-
-// The shadow of a narrow obstacle (docs/pipeline.md, "Shadows"): a run of neighbouring bins whose
-// rays stop on one obstacle (stop points within two cells of each other) at most max_width_cells
-// wide, where the rays on both sides of the run go on at least min_depth_cells beyond its
-// farthest stop. The floor behind it is taken to go on as on both sides: each ray of the run is
-// walked on from behind the obstacle to the line joining the two side rays' ends, stopping at the
-// next occupied cell. A pillar in mid-room hides a wedge of floor; a cabinet against a wall has
-// the wall within min_depth behind it, and a wall is wider than max_width.
-std::size_t fill_shadows(const Eigen::Vector2d& s, const std::vector<RayEnd>& ends, double to_bin,
-                         const Grid<std::uint8_t>& occupied,
-                         const std::vector<std::uint8_t>& floor_seen, const ShadowLimits& lim,
-                         std::vector<std::uint8_t>& shadow) {
-  const int bins = static_cast<int>(ends.size());
-  if (lim.max_width_cells <= 0.0) return 0;
-  // The rays cast: near the position most bins hold no column and cast none.
-  std::vector<int> cast;
-  for (int b = 0; b < bins; ++b)
-    if (ends[static_cast<std::size_t>(b)].end > 0.0f) cast.push_back(b);
-  const int n = static_cast<int>(cast.size());
-  if (n < 3) return 0;
-  const auto angle = [&](int b) { return (b + 0.5) / to_bin; };
-  const auto bin = [&](int k) { return cast[static_cast<std::size_t>(((k % n) + n) % n)]; };
-  const auto at = [&](int k) -> const RayEnd& { return ends[static_cast<std::size_t>(bin(k))]; };
-  const auto point = [&](int k) {
-    const double a = angle(bin(k));
-    return Eigen::Vector2d(s + at(k).end * Eigen::Vector2d(std::cos(a), std::sin(a)));
-  };
-  const auto occ = [&](const Eigen::Vector2d& c) {
-    const int col = static_cast<int>(std::floor(c.x())), row = static_cast<int>(std::floor(c.y()));
-    return occupied.contains(col, row) &&
-           occupied.data[static_cast<std::size_t>(row) * occupied.width + col];
-  };
-  // The occupied cell a blocked ray stopped on (its end lies in it, a quarter cell deep at most).
-  const auto compact_at = [&](const Eigen::Vector2d& c) {
-    const int col = static_cast<int>(std::floor(c.x())), row = static_cast<int>(std::floor(c.y()));
-    return occupied.contains(col, row) &&
-           lim.compact[static_cast<std::size_t>(row) * occupied.width + col];
-  };
-  // Start at the longest unblocked ray, so that no run wraps around the start.
-  int start = -1;
-  for (int k = 0; k < n; ++k)
-    if (!at(k).blocked && (start < 0 || at(k).end > at(start).end)) start = k;
-  if (start < 0) return 0;
-  std::size_t filled = 0;
-  for (int k = start + 1; k < start + n;) {
-    if (!at(k).blocked) {
-      ++k;
-      continue;
-    }
-    // The run: blocked rays with stop points close together; a ray between them that ended
-    // unblocked before reaching the obstacle (no column beyond it in its narrow bin) tells
-    // nothing of what lies behind and is passed over.
-    const auto short_of = [&](int j, double t) { return !at(j).blocked && at(j).end <= t + 1.0; };
-    const int k0 = k;
-    double far = at(k0).end;
-    bool free_standing = compact_at(point(k0));
-    int k1 = k0;
-    for (int j = k0 + 1; j < start + n; ++j) {
-      if (at(j).blocked && (point(j) - point(k1)).norm() <= 2.0) {
-        k1 = j;
-        far = std::max(far, static_cast<double>(at(j).end));
-        free_standing = free_standing && compact_at(point(j));
-      } else if (!short_of(j, at(k1).end)) {
-        break;
-      }
-    }
-    k = k1 + 1;
-    if (!free_standing) continue;
-    // The side rays: the nearest that ended on an obstacle (the floor goes on up to there);
-    // one that ran out of columns in its narrow bin is only a lower bound.
-    int kl = k0 - 1, kr = k1 + 1;
-    while (kl > k1 - n && !at(kl).blocked) --kl;
-    while (kr < k0 + n && !at(kr).blocked) ++kr;
-    const RayEnd &left = at(kl), &right = at(kr);
-    const double width = (point(k1) - point(k0)).norm();
-    if (width > lim.max_width_cells || left.end < far + lim.min_depth_cells ||
-        right.end < far + lim.min_depth_cells)
-      continue;
-    const Eigen::Vector2d pl = point(kl), pr = point(kr), e = pr - pl, q = pl - s;
-    const auto unwrapped = [&](int j) { return bin(j) < bin(k0) ? bin(j) + bins : bin(j); };
-    for (int bb = bin(k0), j = k0, jb = k0; bb <= unwrapped(k1); ++bb) {
-      const int b = bb % bins;
-      while (j < k1 && unwrapped(j + 1) <= bb)  // the obstacle's stop: the last blocked ray
-        if (at(++j).blocked) jb = j;
-      // The ray s + t u meets the segment pl-pr where cross(q + v e, u) = 0.
-      const Eigen::Vector2d u(std::cos(angle(b)), std::sin(angle(b)));
-      const double den = e.x() * u.y() - e.y() * u.x();
-      const double v = std::abs(den) > 1e-9 ? (u.x() * q.y() - u.y() * q.x()) / den : -1.0;
-      const double len =
-          v >= 0.0 && v <= 1.0 ? (q + v * e).dot(u) : std::min<double>(left.end, right.end);
-      // Behind the obstacle, taken as deep as it is wide (its back is mostly unseen: a pillar's
-      // inside must not become free), then over a back face seen from elsewhere.
-      double t = at(jb).end + width;
-      const double t_max = t + lim.max_width_cells;
-      while (t < t_max && occ(s + t * u)) t += 0.25;
-      if (t >= t_max || t >= len) continue;
-      filled += walk_shadow(s, u, t, len, ends[static_cast<std::size_t>(b)].reach, occupied,
-                            floor_seen, shadow);
-    }
-  }
-  return filled;
-}
-
-// 2D rays from one position: per azimuth bin, to the farthest low-seen column of the bin,
-// stopping at the first occupied cell (outside the position's own clearance); then the shadows
-// of narrow obstacles (fill_shadows) into `shadow`.
-std::size_t cast_from(const Eigen::Vector2d& s_cells, const std::vector<std::uint8_t>& low_seen,
-                      const Grid<std::uint8_t>& occupied, double max_range_cells,
-                      double clear_cells, const std::vector<std::uint8_t>& floor_seen,
-                      const ShadowLimits& shadows, std::vector<std::uint8_t>& crossed,
-                      std::vector<std::uint8_t>& shadow) {
-  const int w = occupied.width, h = occupied.height;
-  double r_max = 0.0;
-  const int c0 = std::max(0, static_cast<int>(std::floor(s_cells.x() - max_range_cells)));
-  const int c1 = std::min(w - 1, static_cast<int>(std::ceil(s_cells.x() + max_range_cells)));
-  const int r0 = std::max(0, static_cast<int>(std::floor(s_cells.y() - max_range_cells)));
-  const int r1 = std::min(h - 1, static_cast<int>(std::ceil(s_cells.y() + max_range_cells)));
-  if (c0 > c1 || r0 > r1) return 0;
-  for (int r = r0; r <= r1; ++r)
-    for (int c = c0; c <= c1; ++c)
-      if (low_seen[static_cast<std::size_t>(r) * w + c])
-        r_max = std::max(r_max, std::hypot(c + 0.5 - s_cells.x(), r + 0.5 - s_cells.y()));
-  r_max = std::min(r_max, max_range_cells);
-  if (r_max < 1.0) return 0;
-  // Bins half a cell wide at the farthest range, so neighbouring rays leave no cell out.
-  const int bins =
-      std::clamp(static_cast<int>(std::ceil(4.0 * std::numbers::pi * r_max)), 64, 1 << 16);
-  std::vector<float> reach(static_cast<std::size_t>(bins), 0.0f);
-  const double to_bin = bins / (2.0 * std::numbers::pi);
-  for (int r = r0; r <= r1; ++r)
-    for (int c = c0; c <= c1; ++c) {
-      if (!low_seen[static_cast<std::size_t>(r) * w + c]) continue;
-      const double dx = c + 0.5 - s_cells.x(), dy = r + 0.5 - s_cells.y();
-      const double d = std::hypot(dx, dy);
-      if (d > r_max) continue;
-      double a = std::atan2(dy, dx);
-      if (a < 0) a += 2.0 * std::numbers::pi;
-      const int b = std::min(bins - 1, static_cast<int>(a * to_bin));
-      reach[static_cast<std::size_t>(b)] =
-          std::max(reach[static_cast<std::size_t>(b)], static_cast<float>(d));
-    }
-  std::size_t rays = 0;
-  std::vector<RayEnd> ends(static_cast<std::size_t>(bins));
-  for (int b = 0; b < bins; ++b) {
-    const double len = reach[static_cast<std::size_t>(b)];
-    if (len <= 0.0) continue;
-    ++rays;
-    ends[static_cast<std::size_t>(b)] =
-        walk(s_cells, (b + 0.5) / to_bin, 0.0, len, occupied, clear_cells, crossed);
-    ends[static_cast<std::size_t>(b)].reach = static_cast<float>(len);
-  }
-  fill_shadows(s_cells, ends, to_bin, occupied, floor_seen, shadows, shadow);
-  return rays;
 }
 
 }  // namespace
@@ -488,9 +288,9 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
                                                        w, h, p, min_span, r.specks_dropped);
   for (std::size_t i = 0; i < floor_seen.size(); ++i) floor_seen[i] &= !occupied.data[i];
   std::vector<std::uint8_t> crossed(occupied.size(), 0), shadow(occupied.size(), 0);
-  const ShadowLimits shadow_limits{
+  const detail::ShadowLimits shadow_limits{
       g.to_cells(p.shadow_max_width_m), g.to_cells(p.shadow_min_depth_m),
-      compact_obstacles(occupied, p.rays ? g.to_cells(p.shadow_max_width_m) : 0.0)};
+      detail::compact_obstacles(occupied, p.rays ? g.to_cells(p.shadow_max_width_m) : 0.0)};
   if (p.rays) {
     // The positions are split between the cores, each part marking its own copy of the grid;
     // the copies are OR-ed in part order (the same map whatever the timing).
@@ -505,9 +305,9 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
         const Eigen::Vector3d v = g.to_voxel_coords(scanners[k]);
         if (!v.allFinite()) continue;
         ++part.positions;
-        part.rays += cast_from(v.head<2>(), col.low_seen, occupied, g.to_cells(p.max_range_m),
-                               g.to_cells(p.scanner_clear_m), floor_seen, shadow_limits,
-                               part.crossed, part.shadow);
+        part.rays += detail::cast_from(v.head<2>(), col.low_seen, occupied,
+                                       g.to_cells(p.max_range_m), g.to_cells(p.scanner_clear_m),
+                                       floor_seen, shadow_limits, part.crossed, part.shadow);
       }
       return part;
     });
@@ -538,9 +338,10 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
       ++r.cells_shadow_filled;
     }
   const double cell_m2 = geo.cell_m() * geo.cell_m();
-  r.cells_hole_filled =
-      detail::fill_floor_holes(state, drops(g, floor_z_m), w, h,
-                               {p.floor_hole_max_m2 / cell_m2, p.floor_hole_min_free_share});
+  r.cells_hole_filled = detail::fill_floor_holes(
+      state, drops(g, floor_z_m), w, h,
+      {p.floor_hole_max_m2 / cell_m2,
+       r.positions ? p.floor_hole_min_free_share : p.floor_hole_min_free_share_no_rays});
   for (std::size_t i = 0; i < state.size(); ++i) {
     Cell c = Cell::kUnknown;
     if (state[i] == detail::NavState::kOccupied) {

@@ -49,9 +49,13 @@ struct NavParams {
   /// gaps a multi-beam scanner leaves between the rings its beams draw on the floor, the blind
   /// disc around a mobile scanner's stop. Not where points lie 0.3 m below the floor (a drop).
   /// A closed room or the inside of a wall or cabinet is bordered by occupied cells and stays
-  /// unknown. 0: off.
+  /// unknown. 0: off. Without any scanner position (no rays) the gaps between floor rings and a
+  /// wall are left too, bordered by floor on one side and the wall on the other: there half
+  /// the border free suffices (floor_hole_min_free_share_no_rays). With rays, those gaps are
+  /// crossed, and an unknown pocket beside the floor is more often hidden behind something.
   double floor_hole_max_m2 = 10.0;
   double floor_hole_min_free_share = 0.75;
+  double floor_hole_min_free_share_no_rays = 0.5;
   /// Free space from rays: per scanner position, the map is cast in 2D along azimuth bins, each
   /// to the farthest column in the bin that holds a point below height_m (floor or body band),
   /// stopping at the first occupied cell. false: observed floor alone.
