@@ -127,15 +127,6 @@ Columns scan_columns(const cloud::VoxelGrid& g, std::int64_t floor_lo, std::int6
   return c;
 }
 
-// The body-band columns that are obstacles (docs/pipeline.md, "Specks"): at least min_points
-// points, or min_span layers, or part of a surface: min_neighbours of the 8 neighbours hold
-// body-band points. floor: the seen floor, or empty when the ghost filter ran with every point's
-// own origin (then no veil is left). Where the floor below the column was seen, the neighbours
-// must hold a point within one layer of one of the column's own: a far table top or a wall row
-// is level across its cells. And a scatter column (seen floor around, no min_span consecutive
-// layers) with two scatter neighbours at other heights, or two such veil columns within two
-// cells, is no obstacle at all, nor a surface's neighbour: the veil of mixed pixels in a
-// doorway, points at random heights over a floor seen through them.
 // Each layer within one of its own, set.
 std::uint64_t spread(std::uint64_t b) {
   return b | (b << 1) | (b >> 1);
@@ -203,6 +194,15 @@ std::vector<std::uint8_t> veil_columns(const Columns& col, const std::vector<std
   return out;
 }
 
+// The body-band columns that are obstacles (docs/pipeline.md, "Specks"): at least min_points
+// points, or min_span layers, or part of a surface: min_neighbours of the 8 neighbours hold
+// body-band points. floor: the seen floor, or empty when the ghost filter ran with every point's
+// own origin (then no veil is left). Where the floor below the column was seen, the neighbours
+// must hold a point within one layer of one of the column's own: a far table top or a wall row
+// is level across its cells. And a scatter column (seen floor around, no min_span consecutive
+// layers) with two scatter neighbours at other heights, or two such veil columns within two
+// cells, is no obstacle at all, nor a surface's neighbour: the veil of mixed pixels in a
+// doorway, points at random heights over a floor seen through them.
 Grid<std::uint8_t> occupied_columns(const Columns& col, const std::vector<std::uint8_t>& floor,
                                     int w, int h, const NavParams& p, std::int32_t min_span,
                                     std::int64_t& specks) {

@@ -69,13 +69,15 @@ std::size_t walk_shadow(const Eigen::Vector2d& s, const Eigen::Vector2d& u, doub
   return keep;
 }
 
-// The shadow of a narrow obstacle (docs/pipeline.md, "Shadows"): a run of neighbouring bins whose
-// rays stop on one obstacle (stop points within two cells of each other) at most max_width_cells
-// wide, where the rays on both sides of the run go on at least min_depth_cells beyond its
-// farthest stop. The floor behind it is taken to go on as on both sides: each ray of the run is
-// walked on from behind the obstacle to the line joining the two side rays' ends, stopping at the
-// next occupied cell. A pillar in mid-room hides a wedge of floor; a cabinet against a wall has
-// the wall within min_depth behind it, and a wall is wider than max_width.
+// The shadow of a free-standing obstacle (docs/pipeline.md, "Shadows"): a run of neighbouring
+// rays that stop on one obstacle (stop points within two cells of each other), every stop on a
+// ShadowLimits::compact cell, at most max_width_cells wide, where the nearest blocked rays on
+// both sides of the run go on at least min_depth_cells beyond its farthest stop. The floor behind
+// it is taken to go on as on both sides: each ray of the run is walked on from behind the
+// obstacle to the line joining the two side rays' ends (walk_shadow), stopping at the next
+// occupied cell. A pillar in mid-room hides a wedge of floor; a wall seen end-on, or a cabinet
+// touching it, is part of the wall's piece, and a cabinet has the wall within min_depth behind
+// it. Returns the cells marked.
 std::size_t fill_shadows(const Eigen::Vector2d& s, const std::vector<RayEnd>& ends, double to_bin,
                          const Grid<std::uint8_t>& occupied,
                          const std::vector<std::uint8_t>& floor_seen, const ShadowLimits& lim,
