@@ -14,17 +14,22 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 StoreyRooms find_storey_rooms(const layout::MapResult& m, objects::ObjectsResult& objs,
+                              const border::BorderParams& border_params,
                               const rooms::RoomsParams& params) {
   const auto t0 = std::chrono::steady_clock::now();
   StoreyRooms r;
   r.rooms = rooms::find_rooms(m.nav.map, m.geometry, params);
   r.inner_walls = rooms::inner_wall_objects(objs, m.geometry, r.rooms, params);
-  // The polygons reach the walls of M_r (behind furniture too), never into an inner-wall strip.
+  // The polygons reach the walls of M_r (behind furniture too), never into an inner-wall strip
+  // or the wall under a window.
   Grid<std::uint8_t> blocked(objs.labels.width, objs.labels.height, 0);
+  const bool parapets = objs.parapets.data.size() == blocked.data.size();
   for (std::size_t i = 0; i < objs.labels.data.size(); ++i)
     blocked.data[i] = std::find(r.inner_walls.begin(), r.inner_walls.end(), objs.labels.data[i]) !=
-                      r.inner_walls.end();
+                          r.inner_walls.end() ||
+                      (parapets && objs.parapets.data[i]);
   rooms::fill_rooms(r.rooms, m.layout.layout, blocked);
+  r.fitted = rooms::fit_rooms_to_faces(r.rooms, m.layout.layout, border_params);
   rooms::remove_objects(objs, r.inner_walls);
   r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return r;
@@ -54,6 +59,7 @@ json write_rooms_outputs(const fs::path& out, const layout::MapResult& m,
           {"doors", r.rooms.doors.size()},
           {"area_m2", area},
           {"inner_walls_dropped", r.inner_walls},
+          {"fitted_to_faces", r.fitted},
           {"time_ms", r.ms},
           {"outputs", {"rooms.geojson", "rooms.json", "rooms.png"}}};
 }

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "indoormap/border/params.hpp"
 #include "indoormap/layout/pipeline.hpp"
 #include "indoormap/objects/objects.hpp"
 #include "indoormap/rooms/rooms.hpp"
@@ -16,11 +17,14 @@ struct StoreyRooms {
   rooms::RoomsResult rooms;
   std::vector<int> inner_walls;   ///< ids of the objects dropped as inner walls
   std::vector<int> object_rooms;  ///< per object of the final list (set by assign_rooms)
+  int fitted = 0;                 ///< rooms whose polygon was fitted to the wall faces
   double ms = 0.0;
 };
 
-/// Finds the rooms of the map's navigation map and drops the inner-wall strips from objs.
+/// Finds the rooms of the map's navigation map, fits their polygons to the wall faces (with the
+/// border closure's parameters) and drops the inner-wall strips from objs.
 StoreyRooms find_storey_rooms(const layout::MapResult& m, objects::ObjectsResult& objs,
+                              const border::BorderParams& border_params,
                               const rooms::RoomsParams& params = {});
 
 /// Sets r.object_rooms for the final object list.

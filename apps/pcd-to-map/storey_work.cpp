@@ -12,7 +12,7 @@ StoreyWork compute_storey(int index, layout::MapResult map, const PipelineConfig
   w.index = index;
   w.map = std::move(map);
   w.objs = timed_objects(w.map, cfg.objects, &w.objects_ms);
-  w.rooms = find_storey_rooms(w.map, w.objs);  // drops the inner walls from the objects
+  w.rooms = find_storey_rooms(w.map, w.objs, cfg.border);  // drops the inner walls from the objects
   w.border = timed_border(w.map, cfg.border, &w.border_ms);
   w.furniture_count = w.objs.objects.size();
   add_border_objects(w.objs, w.border, cfg.objects.min_area_m2);

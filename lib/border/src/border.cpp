@@ -137,14 +137,9 @@ std::string no_room_reason(const BorderResult& res, const std::vector<std::size_
          " closed borders contains the scanner at " + fmt_xy(scanners_map.front());
 }
 
-// Step 6: chain_polygon_m and polygon_m of the room's chain. Returns the shadows polygon_m runs
-// across (cell units).
-std::vector<Polygon> room_polygon(BorderResult& res, const Grid<Cell>& layout,
-                                  const GridGeometry& geo, const BorderParams& params,
-                                  const CellParams& cp) {
-  // Simplified in cell units; a simplification that self-intersects is retried with half the
-  // tolerance, down to the raw chain (which is simple).
-  const Polygon raw = cell_polygon(res.chain);
+// A closed cell-unit polygon simplified by simplify_tolerance_m, counter-clockwise; a
+// simplification that self-intersects is retried with half the tolerance, down to raw itself.
+Polygon simplified_ccw(const Polygon& raw, const GridGeometry& geo, const BorderParams& params) {
   Polygon poly = raw;
   for (double tol = geo.to_cells(params.simplify_tolerance_m); tol >= 0.25; tol *= 0.5) {
     Polygon s = simplify_closed(raw, tol);
@@ -154,6 +149,35 @@ std::vector<Polygon> room_polygon(BorderResult& res, const Grid<Cell>& layout,
     }
   }
   if (signed_area(poly) < 0) std::reverse(poly.begin(), poly.end());
+  return poly;
+}
+
+// poly without its spikes: a vertex where the outline turns back on itself (its two edges within
+// max_rad of antiparallel) is the tip of a sliver one or two cells wide (a room's cells reaching
+// along a window's sill or into a gap of the wall); no wall face lies along both of its sides.
+Polygon without_spikes(Polygon poly, double max_rad) {
+  const double cos_back = -std::cos(max_rad);
+  for (bool changed = true; changed && poly.size() > 3;) {
+    changed = false;
+    for (std::size_t i = 0; i < poly.size() && poly.size() > 3; ++i) {
+      const std::size_t n = poly.size();
+      const Eigen::Vector2d e1 = poly[i] - poly[(i + n - 1) % n], e2 = poly[(i + 1) % n] - poly[i];
+      if (e1.norm() < 1e-9 || e2.norm() < 1e-9 || e1.normalized().dot(e2.normalized()) < cos_back) {
+        poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(i));
+        changed = true;
+      }
+    }
+  }
+  return poly;
+}
+
+// Step 6: chain_polygon_m and polygon_m of the room's chain. Returns the shadows polygon_m runs
+// across (cell units).
+std::vector<Polygon> room_polygon(BorderResult& res, const Grid<Cell>& layout,
+                                  const GridGeometry& geo, const BorderParams& params,
+                                  const CellParams& cp) {
+  // Simplified in cell units (the raw chain is simple).
+  const Polygon poly = simplified_ccw(cell_polygon(res.chain), geo, params);
   res.chain_polygon_m = to_map(geo, poly);
   res.polygon_m = res.chain_polygon_m;
   if (params.face_snap_max_m <= 0) return {};
@@ -258,6 +282,23 @@ BorderResult close_border(const layout::MapResult& m, const BorderParams& params
     for (const auto& s : m.layout.seeds) scanners.push_back(m.geometry.center_of(s));
   const Grid<std::uint8_t> below = open_below_mask(m, scanners, params);
   return close_border(m.layout.layout, m.geometry, scanners, params, &below);
+}
+
+std::optional<Polygon> fit_to_wall_faces(const Polygon& outline_m, const Grid<Cell>& layout,
+                                         const GridGeometry& geo, const BorderParams& params) {
+  params.validate();
+  if (outline_m.size() < 3 || params.face_snap_max_m <= 0) return std::nullopt;
+  Polygon raw;
+  raw.reserve(outline_m.size());
+  for (const auto& v : outline_m) raw.push_back(to_cell_units(geo, v));
+  if (!is_simple(raw)) return std::nullopt;
+  CellParams cp = to_cell_params(params, geo);
+  cp.drop_stray_lines = true;
+  Polygon poly = without_spikes(simplified_ccw(raw, geo, params), cp.parallel_max);
+  if (poly.size() < 3 || !is_simple(poly)) return std::nullopt;
+  FaceFit fit = fit_to_faces(poly, layout, cp);
+  if (!fit.polygon) return std::nullopt;
+  return to_map(geo, *fit.polygon);
 }
 
 }  // namespace indoormap::border

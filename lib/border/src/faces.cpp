@@ -169,13 +169,15 @@ std::optional<std::vector<FaceLine>> edge_lines(const Polygon& poly, const Grid<
 // Step 6: the vertices, the intersections of consecutive lines. Nearly parallel neighbours (a step
 // in the wall) are joined where the chain joins them. A line whose two corners come out in reverse
 // order along it (a short line at a corner whose neighbours cross before reaching it) is dropped,
-// and the corners recomputed. nullopt when a corner strays more than 2 chamfer_max from the chain.
+// and the corners recomputed. A corner that strays more than 2 chamfer_max from the chain: nullopt,
+// or with cp.drop_stray_lines the one of its two lines with fewer face points is dropped too.
 std::optional<Polygon> corners(std::vector<FaceLine>& lines, const CellParams& cp) {
   Polygon out;
   while (lines.size() >= 3) {
     const std::size_t m = lines.size();
     std::vector<Eigen::Vector2d> start(m), end(m);
     std::vector<std::uint8_t> step(m, 0);  // 1: lines[i - 1] and lines[i] are joined by a step
+    std::optional<std::size_t> stray;      // drop_stray_lines: the weaker line of a stray corner
     for (std::size_t i = 0; i < m; ++i) {
       const std::size_t p = (i + m - 1) % m;
       const FaceLine& prev = lines[p];
@@ -188,11 +190,15 @@ std::optional<Polygon> corners(std::vector<FaceLine>& lines, const CellParams& c
         step[i] = 1;
         continue;
       }
-      if ((*x - cur.a).norm() > 2.0 * cp.chamfer_max) return std::nullopt;
+      if ((*x - cur.a).norm() > 2.0 * cp.chamfer_max) {
+        if (!cp.drop_stray_lines) return std::nullopt;
+        stray = lines[p].inliers.size() < cur.inliers.size() ? p : i;
+        break;
+      }
       end[p] = start[i] = *x;
     }
-    std::optional<std::size_t> reversed;
-    for (std::size_t i = 0; i < m; ++i)
+    std::optional<std::size_t> reversed = stray;
+    for (std::size_t i = 0; i < m && !stray; ++i)
       if ((end[i] - start[i]).dot(lines[i].u) < 0 &&
           (!reversed || lines[i].inliers.size() < lines[*reversed].inliers.size()))
         reversed = i;

@@ -59,6 +59,10 @@ struct CellParams {
   double corner_turn_min = 0;   ///< [rad] corner_shadow_min_turn_deg
   double corner_turn_max = 0;   ///< [rad] corner_shadow_max_turn_deg
   double shadow_min_unknown_share = 0;
+  /// A stray corner drops its weaker line instead of failing the fit (fit_to_wall_faces: a
+  /// room's outline from cells has short lines at door passages and sills that the closure's
+  /// chain does not).
+  bool drop_stray_lines = false;
 };
 CellParams to_cell_params(const BorderParams& params, const GridGeometry& geo);
 

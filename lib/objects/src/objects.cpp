@@ -151,11 +151,15 @@ void list_objects(const std::vector<Acc>& acc, const Labels& lab, const GridGeom
   const int w = lab.labels.width, h = lab.labels.height;
   const double cell_area = geo.cell_m() * geo.cell_m();
   std::vector<int> new_id(acc.size(), 0);
+  std::vector<std::uint8_t> parapet(acc.size(), 0);
   for (int id = 1; id <= lab.count; ++id) {
     const Acc& a = acc[id];
     if (a.cells * cell_area < params.min_area_m2) continue;
     if (static_cast<double>(a.tops.size()) * cell_area < params.min_seen_area_m2) continue;
-    if (under_lintel(a)) continue;
+    if (under_lintel(a)) {
+      parapet[id] = 1;
+      continue;
+    }
     FurnitureObject o;
     o.id = static_cast<int>(res.objects.size()) + 1;
     new_id[id] = o.id;
@@ -184,8 +188,12 @@ void list_objects(const std::vector<Acc>& acc, const Labels& lab, const GridGeom
     }
     res.objects.push_back(std::move(o));
   }
+  res.parapets = Grid<std::uint8_t>(w, h, 0);
   for (int r = 0; r < h; ++r)
-    for (int c = 0; c < w; ++c) res.labels.at(c, r) = new_id[lab.labels.at(c, r)];
+    for (int c = 0; c < w; ++c) {
+      res.labels.at(c, r) = new_id[lab.labels.at(c, r)];
+      res.parapets.at(c, r) = parapet[lab.labels.at(c, r)];
+    }
 }
 
 // Outline, minimum-area box and point count of every object.

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "indoormap/areas/rooms.hpp"
+#include "indoormap/border/border.hpp"
 #include "indoormap/core/cell_rings.hpp"
 #include "indoormap/core/errors.hpp"
 
@@ -17,6 +18,30 @@ namespace {
 
 void rooms_require(bool ok, const std::string& key, const std::string& what) {
   if (!ok) throw UsageError("invalid parameter rooms." + key + ": " + what);
+}
+
+/// Morphological opening of a w x h mask by a (2 radius + 1) square: slivers narrower than the
+/// square (a room's cells reaching along a window's sill, into a gap of a wall) are removed, so
+/// that no wall face lies along both sides of one thin strip of the outline.
+void open_mask(std::vector<unsigned char>& m, int w, int h, int radius) {
+  const auto pass = [&](bool erode) {
+    std::vector<unsigned char> out(m.size(), 0);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        bool all = true, any = false;
+        for (int dy = -radius; dy <= radius; ++dy)
+          for (int dx = -radius; dx <= radius; ++dx) {
+            const int xx = x + dx, yy = y + dy;
+            const bool v =
+                xx >= 0 && yy >= 0 && xx < w && yy < h && m[static_cast<std::size_t>(yy) * w + xx];
+            all &= v, any |= v;
+          }
+        out[static_cast<std::size_t>(y) * w + x] = erode ? all : any;
+      }
+    m.swap(out);
+  };
+  pass(true);
+  pass(false);
 }
 
 /// The room's closed polygon: the cells of `id` at half-cell resolution, grown by one half cell
@@ -37,6 +62,7 @@ Polygon rooms_outline(const Grid<std::uint16_t>& labels, const GridGeometry& g, 
           if (!corner) fine[static_cast<std::size_t>(fr + dr) * w + fc + dc] = 1;
         }
     }
+  open_mask(fine, w, h, 2);
   const CellRings rings = trace_mask_rings(fine, 0, 0, w, h);
   const CellRing* best = nullptr;
   double best_area = 0.0;
@@ -191,6 +217,64 @@ void fill_rooms(RoomsResult& out, const Grid<Cell>& layout, const Grid<std::uint
     }
   }
   rooms_draw_polygons(out, grown);
+}
+
+namespace {
+
+/// A fitted polygon that covers more of other rooms' free cells than this (a line of an unseen
+/// corridor end meeting its neighbour far out) or leaves more of the room's own free cells outside
+/// (a door's passage through the wall is outside, a few per cent of a corridor's) is not taken.
+constexpr double kMaxForeign_m2 = 0.1;
+constexpr double kMaxLostShare = 0.05;
+
+struct CellShares {
+  double foreign_m2 = 0.0;  ///< other rooms' free cells inside poly
+  double lost_share = 0.0;  ///< the room's own free cells outside poly, per cell of the room
+};
+
+CellShares cell_shares(const RoomsResult& out, int id, const Polygon& poly) {
+  const GridGeometry& g = out.geometry;
+  auto [lo, hi] = bounds(poly);
+  const CellIndex a = g.cell_of(lo), b = g.cell_of(hi);
+  std::int64_t foreign = 0, inside_own = 0, own = 0;
+  for (int r = 0; r < out.labels.height; ++r)
+    for (int c = 0; c < out.labels.width; ++c) {
+      const int l = out.labels.at(c, r);
+      own += l == id;
+      if (l == 0 || c < a.col || c > b.col || r < a.row || r > b.row) continue;
+      if (!contains(poly, g.center_of({c, r}))) continue;
+      foreign += l != id;
+      inside_own += l == id;
+    }
+  if (own == 0) return {0.0, 1.0};
+  return {static_cast<double>(foreign) * g.cell_m() * g.cell_m(),
+          static_cast<double>(own - inside_own) / own};
+}
+
+}  // namespace
+
+int fit_rooms_to_faces(RoomsResult& out, const Grid<Cell>& layout,
+                       const border::BorderParams& params, double max_area_change) {
+  if (layout.width != out.labels.width || layout.height != out.labels.height) return 0;
+  // The rooms' free cells are room space beside the faces, also where M_r's flood did not go
+  // (its seeds are the scanner positions; without any it floods one room).
+  Grid<Cell> faces = layout;
+  for (std::size_t i = 0; i < faces.data.size(); ++i)
+    if (out.labels.data[i] != 0 && faces.data[i] == Cell::kUnknown) faces.data[i] = Cell::kFree;
+  int fitted = 0;
+  for (auto& room : out.rooms) {
+    const auto poly = border::fit_to_wall_faces(room.polygon_m, faces, out.geometry, params);
+    if (!poly) continue;
+    const double area = std::abs(signed_area(*poly));
+    const CellShares sh = cell_shares(out, room.id, *poly);
+    if (std::abs(area - room.area_m2) > max_area_change * room.area_m2) continue;
+    if (sh.foreign_m2 > kMaxForeign_m2 || sh.lost_share > kMaxLostShare) continue;
+    room.polygon_m = *poly;
+    room.area_m2 = area;
+    room.perimeter_m = perimeter(*poly);
+    ++fitted;
+  }
+  return fitted;
 }
 
 void validate(const RoomsParams& p) {

@@ -12,6 +12,7 @@
 // polygon fitted to the wall faces beside the chain, with its area and perimeter.
 #include <Eigen/Core>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -147,6 +148,16 @@ BorderResult close_border(const Grid<Cell>& layout, const GridGeometry& geometry
                           const std::vector<Eigen::Vector2d>& scanners_map,
                           const BorderParams& params = {},
                           const Grid<std::uint8_t>* open_below = nullptr);
+
+/// Step 6 alone, for a room whose outline was found another way (the rooms of a floor,
+/// docs/border-closure.md): outline_m (a simple polygon in the map frame, on or near the room's
+/// wall faces) is simplified and fitted to the wall faces of the layout as the closure's own
+/// polygon is: one line per face, door recesses and the shadows of objects along a wall bridged,
+/// corners where the faces meet. nullopt when the fit fails (a corner strays, the result is not
+/// simple); the caller keeps its outline. Throws UsageError for invalid params.
+std::optional<Polygon> fit_to_wall_faces(const Polygon& outline_m, const Grid<Cell>& layout,
+                                         const GridGeometry& geometry,
+                                         const BorderParams& params = {});
 
 /// The closure on a pipeline result: scanners from cloud_map (or the estimated flood seeds), and
 /// open_below from the voxel grid between the furniture band's bottom and door_clear_height_m.

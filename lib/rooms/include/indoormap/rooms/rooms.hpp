@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "indoormap/areas/params.hpp"
+#include "indoormap/border/params.hpp"
 #include "indoormap/core/cell.hpp"
 #include "indoormap/core/grid.hpp"
 #include "indoormap/core/polygon.hpp"
@@ -76,6 +77,17 @@ RoomsResult find_rooms(const Grid<Cell>& nav, const GridGeometry& geometry,
 /// leaves the rooms unchanged.
 void fill_rooms(RoomsResult& rooms, const Grid<Cell>& layout, const Grid<std::uint8_t>& blocked,
                 double max_fill_m = 1.0);
+
+/// Every room's polygon fitted to the wall faces of the room layout M_r (`layout`, on the rooms'
+/// grid; the rooms' free cells count as room space beside a face), as the paper's border closure
+/// fits a single room's (border::fit_to_wall_faces): a straight line per wall face instead of the
+/// cells' staircase, door recesses and the shadows of objects along a wall bridged. A room keeps
+/// its cell outline when the fit fails, when the fitted polygon's area differs from the outline's
+/// by more than max_area_change (a share), covers more than 0.1 m2 of other rooms' free cells or
+/// leaves more than 5 % of its own outside. Area and perimeter follow the polygon. Returns how many
+/// rooms were fitted; a layout of another size fits none.
+int fit_rooms_to_faces(RoomsResult& rooms, const Grid<Cell>& layout,
+                       const border::BorderParams& params = {}, double max_area_change = 0.1);
 
 /// The id of the room whose polygon holds p (map frame), else of the room with a labelled cell
 /// nearest p within max_m, else 0.
