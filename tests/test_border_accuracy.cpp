@@ -197,3 +197,29 @@ TEST(Border, ShadowOverACornerIsBridgedToTheWallsCrossingASeenChamferStays) {
   EXPECT_NEAR(r.area_m2, indoormap::signed_area(cut), 0.3);
   EXPECT_FALSE(indoormap::contains(r.polygon_m, {5.85, 3.85}));
 }
+
+// Step 6 alone (fit_to_wall_faces, the rooms of a floor): the outline of a 5 x 3 m room's cells,
+// a staircase off its faces, with a sliver: a strip of free cells 1 m long inside the south wall,
+// open to the room at one end (a gap between the wall and a parapet in front of it). Both sides of
+// the strip are faces, so the outline's two lines along it run back on each other. The fit lies
+// on the room's faces and leaves no spike; without faces there is no fit.
+TEST(Border, OutlineFittedToTheWallFacesDropsASliver) {
+  const GridGeometry geo({0.0, 0.0}, kCell, 140, 100);
+  const Polygon truth{{1.0, 1.0}, {6.0, 1.0}, {6.0, 4.0}, {1.0, 4.0}};
+  cv::Mat img(geo.height(), geo.width(), CV_8U, cv::Scalar(0));
+  fill(img, offset_rectilinear(truth, 0.3), geo, static_cast<int>(Cell::kWall));
+  fill(img, offset_rectilinear(truth, -kCell), geo, static_cast<int>(Cell::kFree));
+  fill(img, {{3.0, 0.8}, {4.0, 0.8}, {4.0, 0.9}, {3.0, 0.9}}, geo, static_cast<int>(Cell::kFree));
+  fill(img, {{3.0, 0.85}, {3.1, 0.85}, {3.1, 1.0}, {3.0, 1.0}}, geo, static_cast<int>(Cell::kFree));
+  const Grid<Cell> lay = to_layout(img);
+  const Polygon outline{{1.03, 0.98}, {3.0, 1.02}, {3.0, 0.8},   {4.0, 0.8},   {4.0, 0.9},
+                        {3.1, 0.9},   {3.1, 1.0},  {5.98, 0.98}, {6.03, 4.02}, {0.98, 3.97}};
+  ASSERT_TRUE(indoormap::is_simple(outline));
+  const auto fit = border::fit_to_wall_faces(outline, lay, geo);
+  ASSERT_TRUE(fit.has_value());
+  EXPECT_TRUE(indoormap::is_simple(*fit));
+  EXPECT_LE(hausdorff(*fit, truth), 0.05);
+  EXPECT_NEAR(std::abs(indoormap::signed_area(*fit)), 15.0, 0.3);
+  const Grid<Cell> empty(geo.width(), geo.height(), Cell::kFree);
+  EXPECT_FALSE(border::fit_to_wall_faces(outline, empty, geo).has_value());
+}

@@ -2,10 +2,12 @@
 // object's room; rooms.geojson / rooms.json of lib/formats. Hand-made grids of 5 cm cells.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <set>
 
 #include "indoormap/core/errors.hpp"
+#include "indoormap/core/polygon.hpp"
 #include "indoormap/formats/rooms_json.hpp"
 #include "indoormap/rooms/room_objects.hpp"
 #include "indoormap/rooms/rooms.hpp"
@@ -118,6 +120,78 @@ TEST(Rooms, InnerWallStripIsDroppedFurnitureStays) {
   EXPECT_EQ(objs.labels.at(62, 5), 0);
   EXPECT_EQ(objs.labels.at(66, 35), 2);
   EXPECT_EQ(rooms::object_rooms(objs, r), std::vector<int>{2});
+}
+
+namespace {
+
+// Two rooms 4 x 3 m side by side, the whole rotated by 30 degrees about the origin, 0.2 m walls
+// with a 0.9 m door between them, rasterised at 5 cm (nav and layout alike). Room A
+// has an unseen pocket 0.8 m long and 0.3 m deep along its far wall (unknown in both maps: the
+// shadow of something in the room) and a crack one cell wide running 0.5 m into its outer wall
+// (free in nav, as a doorway's edge or a window's gap can be).
+struct RotatedRooms {
+  static constexpr double kYaw = 30.0 * M_PI / 180.0;
+  Eigen::Matrix2d rot = Eigen::Rotation2Dd(kYaw).toRotationMatrix();
+  Polygon a = rectangle(rot * Eigen::Vector2d(2.0, 1.5), {4.0, 3.0}, kYaw);
+  Polygon b = rectangle(rot * Eigen::Vector2d(6.2, 1.5), {4.0, 3.0}, kYaw);
+  GridGeometry geometry{{-3.0, -1.0}, kCell, 220, 180};
+  Grid<Cell> nav{220, 180, Cell::kUnknown};
+  Grid<Cell> layout{220, 180, Cell::kUnknown};
+  RotatedRooms() {
+    const Polygon outer = rectangle(rot * Eigen::Vector2d(4.1, 1.5), {8.6, 3.4}, kYaw);
+    const Polygon door = rectangle(rot * Eigen::Vector2d(4.1, 1.5), {0.3, 0.9}, kYaw);
+    const Polygon pocket = rectangle(rot * Eigen::Vector2d(2.0, 2.85), {0.8, 0.3}, kYaw);
+    const Polygon crack = rectangle(rot * Eigen::Vector2d(1.0, -0.2), {0.05, 0.5}, kYaw);
+    // A cell is wall when the face crosses it (as the face's points mark it in a scan): the free
+    // cells are those whose centre lies half a cell inside the face.
+    const Polygon free_a = rectangle(rot * Eigen::Vector2d(2.0, 1.5), {3.95, 2.95}, kYaw);
+    const Polygon free_b = rectangle(rot * Eigen::Vector2d(6.2, 1.5), {3.95, 2.95}, kYaw);
+    for (int r = 0; r < nav.height; ++r)
+      for (int c = 0; c < nav.width; ++c) {
+        const Eigen::Vector2d p = geometry.center_of({c, r});
+        Cell v = Cell::kUnknown;
+        if (contains(outer, p)) v = Cell::kWall;
+        if (contains(free_a, p) || contains(free_b, p) || contains(door, p)) v = Cell::kFree;
+        if (contains(pocket, p)) v = Cell::kUnknown;
+        layout.at(c, r) = v;
+        nav.at(c, r) = contains(crack, p) ? Cell::kFree : v;
+      }
+  }
+};
+
+}  // namespace
+
+// The cells' outline cuts the pocket out of room A; fitted to the wall faces, both polygons lie on
+// the true walls (a cell's centre is within half a diagonal of the face: 0.035 m), the pocket is
+// bridged along its wall and the crack leaves no spike.
+TEST(Rooms, PolygonsFittedToTheWallFacesOfRotatedRooms) {
+  const RotatedRooms t;
+  rooms::RoomsResult r = rooms::find_rooms(t.nav, t.geometry);
+  ASSERT_EQ(r.rooms.size(), 2u);
+  rooms::fill_rooms(r, t.layout, {});
+  const int a = rooms::room_at(r, t.rot * Eigen::Vector2d(2.0, 1.5));
+  ASSERT_GE(a, 1);
+  const Polygon outline_a = r.rooms[static_cast<std::size_t>(a - 1)].polygon_m;
+  EXPECT_GT(boundary_hausdorff(outline_a, t.a), 0.2);  // the pocket's notch
+  EXPECT_EQ(rooms::fit_rooms_to_faces(r, t.layout), 2);
+  for (const auto& room : r.rooms) {
+    const Polygon& truth =
+        boundary_hausdorff(room.polygon_m, t.a) < boundary_hausdorff(room.polygon_m, t.b) ? t.a
+                                                                                          : t.b;
+    EXPECT_LT(boundary_hausdorff(room.polygon_m, truth), 0.06) << room.id;
+    EXPECT_NEAR(room.area_m2, 12.0, 0.12) << room.id;
+    EXPECT_NEAR(room.perimeter_m, 14.0, 0.2) << room.id;
+    EXPECT_TRUE(is_simple(room.polygon_m)) << room.id;
+  }
+  // Each polygon holds its own room's centre and not the other's.
+  const Polygon& p1 = r.rooms[0].polygon_m;
+  const Polygon& p2 = r.rooms[1].polygon_m;
+  EXPECT_NE(contains(p1, t.rot * Eigen::Vector2d(2.0, 1.5)),
+            contains(p2, t.rot * Eigen::Vector2d(2.0, 1.5)));
+  EXPECT_NE(contains(p1, t.rot * Eigen::Vector2d(6.2, 1.5)),
+            contains(p2, t.rot * Eigen::Vector2d(6.2, 1.5)));
+  // A layout of another size fits nothing.
+  EXPECT_EQ(rooms::fit_rooms_to_faces(r, Grid<Cell>(3, 3, Cell::kWall)), 0);
 }
 
 TEST(RoomsFormats, GeojsonRoundTripAndGraph) {

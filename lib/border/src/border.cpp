@@ -152,18 +152,29 @@ Polygon simplified_ccw(const Polygon& raw, const GridGeometry& geo, const Border
   return poly;
 }
 
-// poly without its spikes: a vertex where the outline turns back on itself (its two edges within
-// max_rad of antiparallel) is the tip of a sliver one or two cells wide (a room's cells reaching
-// along a window's sill or into a gap of the wall); no wall face lies along both of its sides.
-Polygon without_spikes(Polygon poly, double max_rad) {
+// poly (cell units) without its slivers: the outline turning back on itself, either at one
+// vertex (its two edges within max_rad of antiparallel) or across one edge of at most max_width
+// cells (the edges before and after it antiparallel). Such a sliver is a strip of a room's cells
+// one or two cells wide (in a gap of a wall, between a wall and a parapet); a face lies along
+// each of its sides, and the fit would take them for the room's. Its vertices are dropped until
+// none is left.
+Polygon without_slivers(Polygon poly, double max_rad, double max_width) {
   const double cos_back = -std::cos(max_rad);
-  for (bool changed = true; changed && poly.size() > 3;) {
+  const auto back = [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.norm() < 1e-9 || b.norm() < 1e-9 || a.normalized().dot(b.normalized()) < cos_back;
+  };
+  for (bool changed = true; changed && poly.size() > 4;) {
     changed = false;
-    for (std::size_t i = 0; i < poly.size() && poly.size() > 3; ++i) {
-      const std::size_t n = poly.size();
-      const Eigen::Vector2d e1 = poly[i] - poly[(i + n - 1) % n], e2 = poly[(i + 1) % n] - poly[i];
-      if (e1.norm() < 1e-9 || e2.norm() < 1e-9 || e1.normalized().dot(e2.normalized()) < cos_back) {
+    for (std::size_t i = 0; i < poly.size() && poly.size() > 4; ++i) {
+      const std::size_t n = poly.size(), i1 = (i + 1) % n;
+      const Eigen::Vector2d before = poly[i] - poly[(i + n - 1) % n], edge = poly[i1] - poly[i],
+                            after = poly[(i + 2) % n] - poly[i1];
+      if (back(before, edge)) {  // a tip
         poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(i));
+        changed = true;
+      } else if (edge.norm() <= max_width && back(before, after)) {  // a blunt end
+        poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(std::max(i, i1)));
+        poly.erase(poly.begin() + static_cast<std::ptrdiff_t>(std::min(i, i1)));
         changed = true;
       }
     }
@@ -294,7 +305,7 @@ std::optional<Polygon> fit_to_wall_faces(const Polygon& outline_m, const Grid<Ce
   if (!is_simple(raw)) return std::nullopt;
   CellParams cp = to_cell_params(params, geo);
   cp.drop_stray_lines = true;
-  Polygon poly = without_spikes(simplified_ccw(raw, geo, params), cp.parallel_max);
+  Polygon poly = without_slivers(simplified_ccw(raw, geo, params), cp.parallel_max, 3.0);
   if (poly.size() < 3 || !is_simple(poly)) return std::nullopt;
   FaceFit fit = fit_to_faces(poly, layout, cp);
   if (!fit.polygon) return std::nullopt;

@@ -20,30 +20,6 @@ void rooms_require(bool ok, const std::string& key, const std::string& what) {
   if (!ok) throw UsageError("invalid parameter rooms." + key + ": " + what);
 }
 
-/// Morphological opening of a w x h mask by a (2 radius + 1) square: slivers narrower than the
-/// square (a room's cells reaching along a window's sill, into a gap of a wall) are removed, so
-/// that no wall face lies along both sides of one thin strip of the outline.
-void open_mask(std::vector<unsigned char>& m, int w, int h, int radius) {
-  const auto pass = [&](bool erode) {
-    std::vector<unsigned char> out(m.size(), 0);
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) {
-        bool all = true, any = false;
-        for (int dy = -radius; dy <= radius; ++dy)
-          for (int dx = -radius; dx <= radius; ++dx) {
-            const int xx = x + dx, yy = y + dy;
-            const bool v =
-                xx >= 0 && yy >= 0 && xx < w && yy < h && m[static_cast<std::size_t>(yy) * w + xx];
-            all &= v, any |= v;
-          }
-        out[static_cast<std::size_t>(y) * w + x] = erode ? all : any;
-      }
-    m.swap(out);
-  };
-  pass(true);
-  pass(false);
-}
-
 /// The room's closed polygon: the cells of `id` at half-cell resolution, grown by one half cell
 /// (4-neighbours), traced; the largest outer ring, not simplified: a Douglas-Peucker pass cuts
 /// corners and door notches by a share of a cell along whole walls (1 % of a 6 m2 room's area),
@@ -62,7 +38,6 @@ Polygon rooms_outline(const Grid<std::uint16_t>& labels, const GridGeometry& g, 
           if (!corner) fine[static_cast<std::size_t>(fr + dr) * w + fc + dc] = 1;
         }
     }
-  open_mask(fine, w, h, 2);
   const CellRings rings = trace_mask_rings(fine, 0, 0, w, h);
   const CellRing* best = nullptr;
   double best_area = 0.0;
