@@ -3,6 +3,8 @@
 // object or is counted as left over.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <random>
 
 #include "indoormap/objects/objects.hpp"
@@ -212,6 +214,15 @@ TEST(ObjectFragments, TheWallUnderAWindowIsNoObject) {
   const auto res = extract_objects(L, geo, g, flat_layers(), {});
   EXPECT_TRUE(res.objects.empty());
   expect_accounted(L, res, {});
+  // Its cells are kept as the wall under a window (the rooms of a floor stop there), and no other.
+  ASSERT_EQ(res.parapets.width, w);
+  int parapet = 0;
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) {
+      parapet += res.parapets.at(c, r);
+      if (res.parapets.at(c, r)) EXPECT_EQ(L.at(c, r), Cell::kFurniture) << c << "," << r;
+    }
+  EXPECT_EQ(parapet, 24 * 5);
   // The same cells with nothing above them (a low cabinet along the wall) are an object.
   Grid<Cell> L2(w, h, Cell::kFree);
   auto g2 = voxels(w, h, 60);
@@ -219,7 +230,9 @@ TEST(ObjectFragments, TheWallUnderAWindowIsNoObject) {
   for (int c = 8; c <= 31; ++c)
     for (std::int64_t z = 0; z < g2.nz; ++z)
       if (z * g2.cell_m > 2.0) g2.counts[(z * g2.ny + (h - 5)) * g2.nx + c] = 0;
-  EXPECT_EQ(extract_objects(L2, geo, g2, flat_layers(), {}).objects.size(), 1u);
+  const auto res2 = extract_objects(L2, geo, g2, flat_layers(), {});
+  EXPECT_EQ(res2.objects.size(), 1u);
+  EXPECT_EQ(std::count(res2.parapets.data.begin(), res2.parapets.data.end(), 1), 0);
 }
 
 // A cabinet under a window (0.5 m deep, touching the wall below the sill) keeps its place: the
