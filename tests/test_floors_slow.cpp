@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <array>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
@@ -269,6 +270,10 @@ TEST(FloorsApp, TwelveRoomsPillarShadowedDoorOpens) {
 // the doors open, every position reachable, seen-free IoU >= 0.9, the floor within one cell.
 struct Building {
   int rooms, storeys, seed;
+  /// Rooms within 0.15 m Hausdorff and 3 % area (map-eval's rooms block, summed over the
+  /// storeys) per mode, a regression guard one below what the polygons fitted to the wall faces
+  /// measured (2026-12-06; docs/evaluation.md, "Rooms of a floor"); issue 16 wants 90 %.
+  std::array<int, 4> min_rooms_within;
 };
 
 class FloorsBuilding : public ::testing::TestWithParam<Building> {};
@@ -304,7 +309,8 @@ TEST_P(FloorsBuilding, EveryModeMeetsTheFigures) {
       {"merged", (dir / "fixed" / "cloud.pcd").string() + all_scanner_options(truth)},
       {"trajectory", mobile + " --trajectory " + (dir / "mobile" / "trajectory.txt").string()},
       {"none", mobile}};
-  for (const auto& [name, args] : modes) {
+  for (std::size_t mode = 0; mode < modes.size(); ++mode) {
+    const auto& [name, args] = modes[mode];
     SCOPED_TRACE(name);
     const fs::path sim = dir / (name == "3dtk" || name == "merged" ? "fixed" : "mobile");
     const auto r = run_app("pcd-to-map", args + " -q -o " + (dir / name).string());
@@ -320,17 +326,21 @@ TEST_P(FloorsBuilding, EveryModeMeetsTheFigures) {
     } else {
       parts.push_back(e);
     }
+    int within = 0;
     for (const json& part : parts) {
       const json& f = part["floor"];
       EXPECT_GE(f["doors"]["open_share"].get<double>(), 0.95) << f["doors"];
       EXPECT_TRUE(f["reachability"]["all_reachable"].get<bool>()) << f["reachability"];
       EXPECT_GE(f["map"]["seen_free_iou"]["iou"].get<double>(), 0.9);
+      within += part["rooms"]["within_tolerance"].get<int>();
     }
+    EXPECT_GE(within, b.min_rooms_within[mode]);
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, FloorsBuilding,
-                         ::testing::Values(Building{8, 1, 181}, Building{12, 2, 222}),
+                         ::testing::Values(Building{8, 1, 181, {6, 6, 1, 0}},
+                                           Building{12, 2, 222, {19, 18, 5, 6}}),
                          [](const ::testing::TestParamInfo<Building>& i) {
                            return std::to_string(i.param.rooms) + "Rooms" +
                                   std::to_string(i.param.storeys) + "Storeys";
