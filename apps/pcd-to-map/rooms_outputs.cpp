@@ -31,6 +31,8 @@ StoreyRooms find_storey_rooms(const layout::MapResult& m, objects::ObjectsResult
   rooms::fill_rooms(r.rooms, m.layout.layout, blocked);
   r.fitted = rooms::fit_rooms_to_faces(r.rooms, m.layout.layout, border_params);
   rooms::remove_objects(objs, r.inner_walls);
+  r.wall_pieces = rooms::wall_piece_objects(objs, r.rooms, params);
+  rooms::remove_objects(objs, r.wall_pieces);
   r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }
@@ -59,6 +61,7 @@ json write_rooms_outputs(const fs::path& out, const layout::MapResult& m,
           {"doors", r.rooms.doors.size()},
           {"area_m2", area},
           {"inner_walls_dropped", r.inner_walls},
+          {"wall_pieces_dropped", r.wall_pieces},
           {"fitted_to_faces", r.fitted},
           {"time_ms", r.ms},
           {"outputs", {"rooms.geojson", "rooms.json", "rooms.png"}}};

@@ -16,13 +16,14 @@ namespace indoormap::app {
 struct StoreyRooms {
   rooms::RoomsResult rooms;
   std::vector<int> inner_walls;   ///< ids of the objects dropped as inner walls
+  std::vector<int> wall_pieces;   ///< ids of the objects dropped as lying in a wall
   std::vector<int> object_rooms;  ///< per object of the final list (set by assign_rooms)
   int fitted = 0;                 ///< rooms whose polygon was fitted to the wall faces
   double ms = 0.0;
 };
 
 /// Finds the rooms of the map's navigation map, fits their polygons to the wall faces (with the
-/// border closure's parameters) and drops the inner-wall strips from objs.
+/// border closure's parameters) and drops the inner-wall strips and the pieces in a wall from objs.
 StoreyRooms find_storey_rooms(const layout::MapResult& m, objects::ObjectsResult& objs,
                               const border::BorderParams& border_params,
                               const rooms::RoomsParams& params = {});

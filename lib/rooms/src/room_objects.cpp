@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 namespace indoormap::rooms {
@@ -54,6 +55,30 @@ std::vector<int> inner_wall_objects(const objects::ObjectsResult& objs, const Gr
     // A wall strip has both rooms in reach along much of it; a cabinet beside a door at a corner.
     if (o.box.width_m <= params.inner_wall_max_width_m && all[i] > 0 && 4 * both[i] >= all[i])
       ids.push_back(o.id);
+  }
+  return ids;
+}
+
+std::vector<int> wall_piece_objects(const objects::ObjectsResult& objs, const RoomsResult& rooms,
+                                    const RoomsParams& params) {
+  std::vector<int> ids;
+  if (rooms.rooms.size() < 2) return ids;
+  for (const auto& o : objs.objects) {
+    const bool standing = o.kind == ObjectKind::kFurniture || o.kind == ObjectKind::kHanging;
+    if (!standing || !o.own_cells.empty()) continue;
+    const Eigen::Vector2d c = o.box.center_m;
+    bool in_room = false;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const auto& room : rooms.rooms) {
+      const Polygon& p = room.polygon_m;
+      if (contains(p, c)) {
+        in_room = true;
+        break;
+      }
+      for (std::size_t i = 0; i < p.size(); ++i)
+        nearest = std::min(nearest, point_segment_distance(c, p[i], p[(i + 1) % p.size()]));
+    }
+    if (!in_room && nearest <= params.wall_piece_reach_m) ids.push_back(o.id);
   }
   return ids;
 }

@@ -258,6 +258,8 @@ void validate(const RoomsParams& p) {
   rooms_require(p.inner_wall_max_width_m >= 0.0, "inner_wall_max_width_m", "must be >= 0");
   rooms_require(p.inner_wall_reach_m >= 0.0 && p.inner_wall_reach_m <= 1.0, "inner_wall_reach_m",
                 "must be in [0, 1]");
+  rooms_require(p.wall_piece_reach_m >= 0.0 && p.wall_piece_reach_m <= 1.0, "wall_piece_reach_m",
+                "must be in [0, 1]");
 }
 
 RoomsResult find_rooms(const Grid<Cell>& nav, const GridGeometry& g, const RoomsParams& p) {

@@ -19,6 +19,14 @@ std::vector<int> inner_wall_objects(const objects::ObjectsResult& objs,
                                     const GridGeometry& objects_geometry, const RoomsResult& rooms,
                                     const RoomsParams& params = {});
 
+/// Ids of the objects that lie in a wall, once the rooms' polygons are on the wall faces
+/// (fit_rooms_to_faces): kind furniture or hanging, not from the border closure, box centre in no
+/// room's polygon and within params.wall_piece_reach_m of one (the wall under a window whose
+/// lintel was not seen, pieces of a wall's face or of an inner wall the strip rule left). None
+/// with fewer than two rooms: a single room's scan sees furniture beyond its door or window.
+std::vector<int> wall_piece_objects(const objects::ObjectsResult& objs, const RoomsResult& rooms,
+                                    const RoomsParams& params = {});
+
 /// Removes the objects of `ids` from objs.objects and their cells from objs.labels (ids of the
 /// others unchanged). Returns how many were removed.
 int remove_objects(objects::ObjectsResult& objs, const std::vector<int>& ids);

@@ -33,6 +33,10 @@ struct RoomsParams {
   /// furniture stands in one room, and a wall (0.1 m or more) plus its face cells lie between it
   /// and the next room.
   double inner_wall_reach_m = 0.15;
+  /// An object whose box centre lies in no room's polygon but within this distance of one lies in
+  /// a wall (room_objects.hpp, wall_piece_objects): furniture stands in a room, and a wall is
+  /// at most 0.3 m thick on the simulated and scanned buildings.
+  double wall_piece_reach_m = 0.3;
 };
 
 /// Throws UsageError naming the key (rooms.<key>).
