@@ -196,7 +196,7 @@ TEST(Rooms, PolygonsFittedToTheWallFacesOfRotatedRooms) {
 
 // An object whose centre lies in the wall between two rooms (in no polygon, within 0.3 m of one)
 // is a piece of wall; one inside a room, one far outside every room (seen through a window) and a
-// column from the border closure stay; with one room nothing is dropped.
+// pillar (not furniture) stay; with one room nothing is dropped.
 TEST(Rooms, ObjectsInAWallAreDroppedOthersStay) {
   const TwoRooms t;
   const auto r = rooms::find_rooms(t.nav, t.geometry);
@@ -212,7 +212,7 @@ TEST(Rooms, ObjectsInAWallAreDroppedOthersStay) {
   add(1, {1.5, 1.0});                        // in room 1
   add(2, {3.15, 0.3});                       // in the wall between the rooms, below the door
   add(3, {3.15, 2.5});                       // beyond the outer wall, 0.4 m from room 2's polygon
-  add(4, {3.15, 1.9}, ObjectKind::kPillar);  // a column in the wall: the closure's, kept
+  add(4, {3.15, 1.9}, ObjectKind::kPillar);  // a pillar in the wall: kept
   add(5, {1.5, -0.15});                      // in the outer wall, 0.2 m below room 1
   EXPECT_EQ(rooms::wall_piece_objects(objs, r), (std::vector<int>{2, 5}));
   rooms::RoomsResult one = r;

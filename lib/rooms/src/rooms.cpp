@@ -207,23 +207,21 @@ struct CellShares {
   double lost_share = 0.0;  ///< the room's own free cells outside poly, per cell of the room
 };
 
-CellShares cell_shares(const RoomsResult& out, int id, const Polygon& poly) {
+CellShares cell_shares(const RoomsResult& out, const Room& room, const Polygon& poly) {
   const GridGeometry& g = out.geometry;
   auto [lo, hi] = bounds(poly);
   const CellIndex a = g.cell_of(lo), b = g.cell_of(hi);
-  std::int64_t foreign = 0, inside_own = 0, own = 0;
-  for (int r = 0; r < out.labels.height; ++r)
-    for (int c = 0; c < out.labels.width; ++c) {
+  std::int64_t foreign = 0, inside_own = 0;
+  for (int r = std::max(a.row, 0); r <= std::min(b.row, out.labels.height - 1); ++r)
+    for (int c = std::max(a.col, 0); c <= std::min(b.col, out.labels.width - 1); ++c) {
       const int l = out.labels.at(c, r);
-      own += l == id;
-      if (l == 0 || c < a.col || c > b.col || r < a.row || r > b.row) continue;
-      if (!contains(poly, g.center_of({c, r}))) continue;
-      foreign += l != id;
-      inside_own += l == id;
+      if (l == 0 || !contains(poly, g.center_of({c, r}))) continue;
+      foreign += l != room.id;
+      inside_own += l == room.id;
     }
-  if (own == 0) return {0.0, 1.0};
+  if (room.cells <= 0) return {0.0, 1.0};
   return {static_cast<double>(foreign) * g.cell_m() * g.cell_m(),
-          static_cast<double>(own - inside_own) / own};
+          static_cast<double>(room.cells - inside_own) / room.cells};
 }
 
 }  // namespace
@@ -241,7 +239,7 @@ int fit_rooms_to_faces(RoomsResult& out, const Grid<Cell>& layout,
     const auto poly = border::fit_to_wall_faces(room.polygon_m, faces, out.geometry, params);
     if (!poly) continue;
     const double area = std::abs(signed_area(*poly));
-    const CellShares sh = cell_shares(out, room.id, *poly);
+    const CellShares sh = cell_shares(out, room, *poly);
     if (std::abs(area - room.area_m2) > max_area_change * room.area_m2) continue;
     if (sh.foreign_m2 > kMaxForeign_m2 || sh.lost_share > kMaxLostShare) continue;
     room.polygon_m = *poly;

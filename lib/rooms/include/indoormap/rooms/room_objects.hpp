@@ -20,8 +20,8 @@ std::vector<int> inner_wall_objects(const objects::ObjectsResult& objs,
                                     const RoomsParams& params = {});
 
 /// Ids of the objects that lie in a wall, once the rooms' polygons are on the wall faces
-/// (fit_rooms_to_faces): kind furniture or hanging, not from the border closure, box centre in no
-/// room's polygon and within params.wall_piece_reach_m of one (the wall under a window whose
+/// (fit_rooms_to_faces): kind furniture or hanging, without cells of its own (a lamp has them),
+/// box centre in no room's polygon and within params.wall_piece_reach_m of one (the wall under a window whose
 /// lintel was not seen, pieces of a wall's face or of an inner wall the strip rule left). None
 /// with fewer than two rooms: a single room's scan sees furniture beyond its door or window.
 std::vector<int> wall_piece_objects(const objects::ObjectsResult& objs, const RoomsResult& rooms,

@@ -7,7 +7,8 @@
 // on average, half a cell inside the first occupied cell, so the free cells' edge is half a cell
 // short of it; the outline at half-cell resolution, grown by one half cell, lands on the face.
 // Obstacles inside the room (furniture, unseen spots) are holes and left out: the polygon is the
-// outer ring only.
+// outer ring only. fit_rooms_to_faces then fits that outline to M_r's wall faces (the border
+// closure's step 6), which takes off the staircase of rotated walls and the notches of shadows.
 #include <Eigen/Core>
 #include <cstdint>
 #include <vector>
