@@ -302,7 +302,6 @@ std::optional<Polygon> fit_to_wall_faces(const Polygon& outline_m, const Grid<Ce
   Polygon raw;
   raw.reserve(outline_m.size());
   for (const auto& v : outline_m) raw.push_back(to_cell_units(geo, v));
-  if (!is_simple(raw)) return std::nullopt;
   CellParams cp = to_cell_params(params, geo);
   cp.drop_stray_lines = true;
   Polygon poly = without_slivers(simplified_ccw(raw, geo, params), cp.parallel_max, 3.0);

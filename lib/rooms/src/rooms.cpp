@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -11,6 +12,7 @@
 #include "indoormap/border/border.hpp"
 #include "indoormap/core/cell_rings.hpp"
 #include "indoormap/core/errors.hpp"
+#include "indoormap/core/parallel.hpp"
 
 namespace indoormap::rooms {
 
@@ -234,19 +236,35 @@ int fit_rooms_to_faces(RoomsResult& out, const Grid<Cell>& layout,
   Grid<Cell> faces = layout;
   for (std::size_t i = 0; i < faces.data.size(); ++i)
     if (out.labels.data[i] != 0 && faces.data[i] == Cell::kUnknown) faces.data[i] = Cell::kFree;
+  // Each room's fit reads only its own outline and the shared grids: the rooms are split between
+  // the cores, and the results applied in room order.
+  const auto parts = parallel_parts(out.rooms.size(), 1, [&](std::size_t r0, std::size_t r1) {
+    std::vector<std::optional<Polygon>> fits;
+    for (std::size_t k = r0; k < r1; ++k) {
+      const Room& room = out.rooms[k];
+      auto poly = border::fit_to_wall_faces(room.polygon_m, faces, out.geometry, params);
+      if (poly) {
+        const CellShares sh = cell_shares(out, room, *poly);
+        if (std::abs(std::abs(signed_area(*poly)) - room.area_m2) >
+                max_area_change * room.area_m2 ||
+            sh.foreign_m2 > kMaxForeign_m2 || sh.lost_share > kMaxLostShare)
+          poly.reset();
+      }
+      fits.push_back(std::move(poly));
+    }
+    return fits;
+  });
   int fitted = 0;
-  for (auto& room : out.rooms) {
-    const auto poly = border::fit_to_wall_faces(room.polygon_m, faces, out.geometry, params);
-    if (!poly) continue;
-    const double area = std::abs(signed_area(*poly));
-    const CellShares sh = cell_shares(out, room, *poly);
-    if (std::abs(area - room.area_m2) > max_area_change * room.area_m2) continue;
-    if (sh.foreign_m2 > kMaxForeign_m2 || sh.lost_share > kMaxLostShare) continue;
-    room.polygon_m = *poly;
-    room.area_m2 = area;
-    room.perimeter_m = perimeter(*poly);
-    ++fitted;
-  }
+  std::size_t k = 0;
+  for (const auto& part : parts)
+    for (const auto& poly : part) {
+      Room& room = out.rooms[k++];
+      if (!poly) continue;
+      room.polygon_m = *poly;
+      room.area_m2 = std::abs(signed_area(*poly));
+      room.perimeter_m = perimeter(*poly);
+      ++fitted;
+    }
   return fitted;
 }
 
