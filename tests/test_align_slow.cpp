@@ -253,8 +253,11 @@ TEST(AlignWallsApp, RoomPolygonsObjectsAndScannerLieOnTheAlignedMap) {
     const auto polys = polygons(runs->aligned / file);
     ASSERT_FALSE(polys.empty()) << file;
     const double on = vertices_on_walls(m, polys[0], 0.25);
-    // rooms.geojson's rooms also cross the openings between them, where map.pgm is free.
-    EXPECT_GT(on, std::string(file) == "room.geojson" ? 0.9 : 0.7) << file;
+    // rooms.geojson's rooms also cross the openings between them, where map.pgm is free, and end
+    // where the seen space ends: in the aligned run the piece of corridor seen through the door
+    // joins the lab (its core, 0.595 m2, is just below rooms.segmentation.min_core_area_m2), and
+    // the vertices along its unseen far end lie on no wall.
+    EXPECT_GT(on, std::string(file) == "room.geojson" ? 0.9 : 0.6) << file;
     // ... which they would miss turned back into the levelled (scan) frame.
     Polygon back;
     const double a = -yaw * CV_PI / 180.0;
