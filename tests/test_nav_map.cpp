@@ -127,6 +127,62 @@ TEST(NavMap, VeilColumnWithAShortRunOfLayersIsNoLeg) {
   EXPECT_EQ(at(r, 16, 10), Cell::kWall) << "the leg";
 }
 
+// A table top at 0.75 m over a floor seen beneath it (through its legs, from other positions),
+// its edge columns also holding a mixed pixel each at unrelated heights (the depth jump from the
+// top to the floor behind): a level surface, not a doorway's veil. Without the level-surface
+// guard the edge columns are scatter at other heights, every top column beside two of them
+// becomes veil, and the whole top is free.
+TEST(NavMap, TableTopWithMixedPixelsAlongItsEdgeIsNoVeil) {
+  cloud::VoxelGrid g = room(0.05, 20, 20);
+  for (int y = 0; y < 20; ++y)
+    for (int x = 0; x < 20; ++x) put(g, x, y, 0);
+  for (int x = 6; x < 12; ++x)
+    for (int y = 6; y < 10; ++y) {
+      put(g, x, y, 15, 6);
+      if (x == 6 || x == 11 || y == 6 || y == 9) put(g, x, y, (x + 2 * y) % 2 ? 4 : 9, 1);
+    }
+  const NavResult r = build_nav_map(g, 0.025, {}, NavParams{});
+  for (int x = 6; x < 12; ++x)
+    for (int y = 6; y < 10; ++y) EXPECT_EQ(at(r, x, y), Cell::kWall) << x << "," << y;
+  EXPECT_EQ(at(r, 3, 3), Cell::kFree);
+  EXPECT_EQ(r.specks_dropped, 0);
+}
+
+// Rays pass beneath a raised obstacle. A scanner at x 0.5 m sees the floor up to x 1.0 m, a table
+// top at 0.75 m over x 1.5-1.7 m, y 0.6-1.7 m with the floor seen under it, and the far wall at
+// x 3.9 m; the floor between the table and the wall was not seen. The rays to the wall's foot
+// passed under the top: the floor behind the table is free, the table stays occupied. A cabinet
+// (points from the floor up, y 0.1-0.4 m) stops its rays; with nav.ray_under_min_m above the top
+// the table stops them too.
+TEST(NavMap, RaysPassBeneathATableTopNotACabinet) {
+  auto g = room();
+  for (int y = 0; y < 20; ++y) {
+    for (int x = 0; x < 10; ++x) put(g, x, y, 0);
+    for (int z = 0; z < 25; ++z) put(g, 39, y, z);  // the far wall
+  }
+  for (int x = 15; x < 18; ++x)
+    for (int y = 6; y < 17; ++y) {  // 1.1 m across: wider than a shadow (nav.shadow_max_width_m)
+      put(g, x, y, 0);              // the floor under the table, seen between its legs
+      put(g, x, y, 7);              // the top
+    }
+  for (int x = 15; x < 18; ++x)
+    for (int y = 1; y < 4; ++y) {
+      put(g, x, y, 0);
+      for (int z = 1; z < 9; ++z) put(g, x, y, z);  // the cabinet
+    }
+  const std::vector<Eigen::Vector3d> scanner{{0.55, 1.05, 1.2}};
+  const NavResult r = build_nav_map(g, 0.05, scanner, NavParams{});
+  EXPECT_EQ(at(r, 16, 10), Cell::kWall) << "the table top";
+  EXPECT_EQ(at(r, 25, 10), Cell::kFree) << "behind the table: crossed beneath its top";
+  EXPECT_EQ(at(r, 16, 2), Cell::kWall) << "the cabinet";
+  EXPECT_EQ(at(r, 25, 2), Cell::kUnknown) << "behind the cabinet: no ray";
+  NavParams high;
+  high.ray_under_min_m = 0.8;
+  const NavResult off = build_nav_map(g, 0.05, scanner, high);
+  EXPECT_EQ(at(off, 16, 10), Cell::kWall);
+  EXPECT_EQ(at(off, 25, 10), Cell::kUnknown);
+}
+
 // Floor holes: a walled room (walls at x 0 and 39, y 0 and 19) with its floor seen but for a
 // ring gap (x 8-10, wall to wall across the room: two thirds of its border is free floor), a
 // scanner's blind disc (radius 3 cells round (30, 10)), a cabinet (occupied sides round an
@@ -276,6 +332,9 @@ TEST(NavMap, ParametersAreValidated) {
   EXPECT_THROW(validate(p), UsageError);
   p = {};
   p.floor_hole_max_m2 = -1;
+  EXPECT_THROW(validate(p), UsageError);
+  p = {};
+  p.ray_under_min_m = -0.1;
   EXPECT_THROW(validate(p), UsageError);
 }
 

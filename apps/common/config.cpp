@@ -164,6 +164,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("nav", "rays", nv.rays);
   f("nav", "max_range_m", nv.max_range_m);
   f("nav", "scanner_clear_m", nv.scanner_clear_m);
+  f("nav", "ray_under_min_m", nv.ray_under_min_m);
   f("robot", "min_obstacle_height_m", nv.min_obstacle_height_m);
   f("robot", "height_m", nv.height_m);
   visit_plan(c.plan, f);

@@ -5,6 +5,7 @@
 #include <functional>
 #include <numbers>
 #include <opencv2/imgproc.hpp>
+#include <utility>
 
 #include "floor_holes.hpp"
 #include "indoormap/core/errors.hpp"
@@ -40,6 +41,8 @@ void validate(const NavParams& p) {
   require(std::isfinite(p.max_range_m) && p.max_range_m > 0, "nav.max_range_m: must be > 0");
   require(std::isfinite(p.scanner_clear_m) && p.scanner_clear_m >= 0,
           "nav.scanner_clear_m: must be >= 0");
+  require(std::isfinite(p.ray_under_min_m) && p.ray_under_min_m >= 0,
+          "nav.ray_under_min_m: must be >= 0");
   require(std::isfinite(p.shadow_max_width_m) && p.shadow_max_width_m >= 0,
           "nav.shadow_max_width_m: must be >= 0");
   require(std::isfinite(p.shadow_min_depth_m) && p.shadow_min_depth_m >= 0,
@@ -56,6 +59,10 @@ struct Columns {
   std::vector<std::uint16_t> layers;  ///< body-band layers holding points
   std::vector<std::uint64_t> bits;    ///< those layers, bit (layer - body_lo) % 64
   std::vector<std::uint8_t> floor_seen, low_seen;
+  /// The most points in two neighbouring body-band layers, and those layers' bits: the column's
+  /// piece of a level surface (a table top, a seat), if it has one.
+  std::vector<std::uint32_t> dense;
+  std::vector<std::uint64_t> dense_bits;
 };
 
 // The floor's layer per column as an offset from the global floor layer f0: per tile of
@@ -101,7 +108,9 @@ Columns scan_columns(const cloud::VoxelGrid& g, std::int64_t floor_lo, std::int6
   Columns c{std::vector<std::uint32_t>(n, 0), std::vector<std::int32_t>(n, -1),
             std::vector<std::int32_t>(n, -1), std::vector<std::uint16_t>(n, 0),
             std::vector<std::uint64_t>(n, 0), std::vector<std::uint8_t>(n, 0),
-            std::vector<std::uint8_t>(n, 0)};
+            std::vector<std::uint8_t>(n, 0),  std::vector<std::uint32_t>(n, 0),
+            std::vector<std::uint64_t>(n, 0)};
+  std::vector<std::uint16_t> below(n, 0);  // points in the column's previous body layer
   const auto [dmin, dmax] = std::minmax_element(off.begin(), off.end());
   const std::int64_t z0 = std::max<std::int64_t>(0, floor_lo + (n ? *dmin : 0));
   const std::int64_t z1 = std::min<std::int64_t>(g.nz - 1, body_hi + (n ? *dmax : 0));
@@ -109,6 +118,7 @@ Columns scan_columns(const cloud::VoxelGrid& g, std::int64_t floor_lo, std::int6
     const std::uint16_t* layer = g.counts.data() + g.index(0, 0, z);
     for (std::size_t i = 0; i < n; ++i) {
       const std::uint16_t k = layer[i];
+      const std::uint16_t under = std::exchange(below[i], 0);
       if (!k) continue;
       const std::int64_t zr = z - off[i];  // the layer as if the column's floor were f0
       if (zr < floor_lo || zr > body_hi) continue;
@@ -117,9 +127,15 @@ Columns scan_columns(const cloud::VoxelGrid& g, std::int64_t floor_lo, std::int6
         c.floor_seen[i] = 1;
         continue;
       }
+      below[i] = k;
+      const std::uint64_t bit = std::uint64_t{1} << ((zr - body_lo) % 64);
+      if (const std::uint32_t pair = std::uint32_t{k} + under; pair > c.dense[i]) {
+        c.dense[i] = pair;
+        c.dense_bits[i] = bit | (under ? std::uint64_t{1} << ((zr - 1 - body_lo) % 64) : 0);
+      }
       c.points[i] += k;
       ++c.layers[i];
-      c.bits[i] |= std::uint64_t{1} << ((zr - body_lo) % 64);
+      c.bits[i] |= bit;
       if (c.lo[i] < 0) c.lo[i] = static_cast<std::int32_t>(zr);
       c.hi[i] = static_cast<std::int32_t>(zr);
     }
@@ -132,13 +148,29 @@ std::uint64_t spread(std::uint64_t b) {
   return b | (b << 1) | (b >> 1);
 }
 
+// A piece of a level surface seen from above (a table top, a seat): at least min_points points
+// in two neighbouring layers, and at least min_neighbours of the 8 neighbours holding points
+// within one layer of those. The mixed pixels along the surface's edge add points at other
+// heights to its columns; they do not make the surface a veil.
+bool level_surface(const Columns& col, int c, int row, int w, int h, const NavParams& p) {
+  const std::size_t i = static_cast<std::size_t>(row) * w + c;
+  if (col.dense[i] < static_cast<std::uint32_t>(p.min_points)) return false;
+  const std::uint64_t near = spread(col.dense_bits[i]);
+  int level = 0;
+  for (int dr = -1; dr <= 1; ++dr)
+    for (int dc = -1; dc <= 1; ++dc)
+      if ((dr || dc) && c + dc >= 0 && row + dr >= 0 && c + dc < w && row + dr < h)
+        level += (col.bits[static_cast<std::size_t>(row + dr) * w + c + dc] & near) != 0;
+  return level >= p.min_neighbours;
+}
+
 // Scatter columns: no min_span consecutive layers hold points (no piece of surface min_column_m
-// tall: five mixed pixels at random heights may well fill three neighbouring 5 cm layers), over
-// seen floor that goes on in all four directions (a wall's face has its unseen inside on one
-// side).
+// tall: five mixed pixels at random heights may well fill three neighbouring 5 cm layers), no
+// piece of a level surface, over seen floor that goes on in all four directions (a wall's face
+// has its unseen inside on one side).
 std::vector<std::uint8_t> scatter_columns(const Columns& col,
                                           const std::function<bool(std::size_t)>& seen, int w,
-                                          int h, std::int32_t min_span) {
+                                          int h, std::int32_t min_span, const NavParams& p) {
   const auto continuous = [&](std::uint64_t b) {
     std::uint64_t run = b;
     for (std::int32_t k = 1; k < min_span && k < 64; ++k) run &= b << k;
@@ -150,7 +182,8 @@ std::vector<std::uint8_t> scatter_columns(const Columns& col,
     for (int c = 1; c + 1 < w; ++c) {
       const std::size_t i = static_cast<std::size_t>(row) * w + c;
       scatter[i] = col.lo[i] >= 0 && !continuous(col.bits[i]) && seen(i) && seen(i - 1) &&
-                   seen(i + 1) && seen(i - wu) && seen(i + wu);
+                   seen(i + 1) && seen(i - wu) && seen(i + wu) &&
+                   !level_surface(col, c, row, w, h, p);
     }
   return scatter;
 }
@@ -210,7 +243,7 @@ Grid<std::uint8_t> occupied_columns(const Columns& col, const std::vector<std::u
   const std::function<bool(std::size_t)> seen = [&](std::size_t i) {
     return !floor.empty() && floor[i];
   };
-  const auto veil = veil_columns(col, scatter_columns(col, seen, w, h, min_span), w, h);
+  const auto veil = veil_columns(col, scatter_columns(col, seen, w, h, min_span, p), w, h);
   // A veil column is no obstacle, nor a surface's neighbour (a speck among veil columns at its
   // own height is part of the veil, not of a table top).
   for (int row = 0; row < h; ++row)
@@ -235,6 +268,10 @@ Grid<std::uint8_t> occupied_columns(const Columns& col, const std::vector<std::u
     }
   return occupied;
 }
+
+// A raised obstacle's points lie within this height: a table top or a seat (5 cm thick, seen a
+// layer or two deep), not a wall's face or a backrest.
+constexpr double kRaisedMaxSpanM = 0.15;
 
 // Columns holding a point more than kDropM below the floor: a hole in the floor (a stairwell, a
 // shaft) shows what lies below it; such a gap in the floor's returns is no floor hole to fill.
@@ -286,6 +323,15 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
   const std::vector<std::uint8_t> no_floor;  // the exact ghost filter cleared the veils
   const Grid<std::uint8_t> occupied = occupied_columns(col, veils_cleared ? no_floor : floor_seen,
                                                        w, h, p, min_span, r.specks_dropped);
+  // Raised obstacles, over a floor seen in their own cell: the rays pass beneath them. Only thin
+  // ones (a top, a seat: points within kRaisedMaxSpanM): a wall's face seen above something
+  // standing in front of it is no top, and a ray through it would mark the wall's inside seen.
+  std::vector<std::uint8_t> raised(occupied.size(), 0);
+  const std::int64_t raised_lo = g.layer_of(floor_z_m + p.ray_under_min_m);
+  const auto span = static_cast<std::int32_t>(std::lround(g.to_cells(kRaisedMaxSpanM)));
+  for (std::size_t i = 0; i < raised.size(); ++i)
+    raised[i] = occupied.data[i] && col.floor_seen[i] && col.lo[i] >= raised_lo &&
+                col.hi[i] - col.lo[i] < span;
   for (std::size_t i = 0; i < floor_seen.size(); ++i) floor_seen[i] &= !occupied.data[i];
   std::vector<std::uint8_t> crossed(occupied.size(), 0), shadow(occupied.size(), 0);
   const detail::ShadowLimits shadow_limits{
@@ -305,7 +351,7 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
         const Eigen::Vector3d v = g.to_voxel_coords(scanners[k]);
         if (!v.allFinite()) continue;
         ++part.positions;
-        part.rays += detail::cast_from(v.head<2>(), col.low_seen, occupied,
+        part.rays += detail::cast_from(v.head<2>(), col.low_seen, occupied, raised,
                                        g.to_cells(p.max_range_m), g.to_cells(p.scanner_clear_m),
                                        floor_seen, shadow_limits, part.crossed, part.shadow);
       }

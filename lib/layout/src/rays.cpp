@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 
 namespace indoormap::layout::detail {
 
@@ -18,26 +19,33 @@ struct RayEnd {
 };
 
 // Walks from the position along angle a up to len cells, marking the cells crossed; stops at the
-// first occupied cell beyond clear_cells. Steps of a quarter cell: simple, and it visits every
-// cell a ray crosses but for corner grazes (the neighbouring bins cover those).
+// first occupied cell beyond clear_cells that is not `raised` (empty: none is), and returns where
+// the first occupied cell stopped it or would have (the shadows are cast from there). Steps of a
+// quarter cell: simple, and it visits every cell a ray crosses but for corner grazes (the
+// neighbouring bins cover those).
 RayEnd walk(const Eigen::Vector2d& s, double a, double from, double len,
-            const Grid<std::uint8_t>& occupied, double clear_cells,
-            std::vector<std::uint8_t>& marked) {
+            const Grid<std::uint8_t>& occupied, const std::vector<std::uint8_t>& raised,
+            double clear_cells, std::vector<std::uint8_t>& marked) {
   const int w = occupied.width, h = occupied.height;
   const double dx = std::cos(a), dy = std::sin(a);
   int last = -1;
+  std::optional<RayEnd> first;  // the first occupied cell on the way
   for (double t = from; t <= len; t += 0.25) {
     const int c = static_cast<int>(std::floor(s.x() + t * dx));
     const int r = static_cast<int>(std::floor(s.y() + t * dy));
-    if (c < 0 || r < 0 || c >= w || r >= h) return {static_cast<float>(t), false};
+    if (c < 0 || r < 0 || c >= w || r >= h) return first.value_or(RayEnd{static_cast<float>(t)});
     const int idx = r * w + c;
     if (idx == last) continue;
     last = idx;
-    if (occupied.data[static_cast<std::size_t>(idx)] && t > clear_cells)
-      return {static_cast<float>(t), true};
-    marked[static_cast<std::size_t>(idx)] = 1;
+    const auto i = static_cast<std::size_t>(idx);
+    if (occupied.data[i] && t > clear_cells) {
+      if (!first) first = RayEnd{static_cast<float>(t), true};
+      if (raised.empty() || !raised[i]) return *first;
+      continue;  // beneath a raised obstacle: the ray goes on
+    }
+    marked[i] = 1;
   }
-  return {static_cast<float>(len), false};
+  return first.value_or(RayEnd{static_cast<float>(len)});
 }
 
 // One ray of a shadow, from t0 cells on along u: every cell up to len (the line joining the
@@ -198,10 +206,10 @@ std::vector<std::uint8_t> compact_obstacles(const Grid<std::uint8_t>& occupied, 
 // stopping at the first occupied cell (outside the position's own clearance); then the shadows
 // of narrow obstacles (fill_shadows) into `shadow`.
 std::size_t cast_from(const Eigen::Vector2d& s_cells, const std::vector<std::uint8_t>& low_seen,
-                      const Grid<std::uint8_t>& occupied, double max_range_cells,
-                      double clear_cells, const std::vector<std::uint8_t>& floor_seen,
-                      const ShadowLimits& shadows, std::vector<std::uint8_t>& crossed,
-                      std::vector<std::uint8_t>& shadow) {
+                      const Grid<std::uint8_t>& occupied, const std::vector<std::uint8_t>& raised,
+                      double max_range_cells, double clear_cells,
+                      const std::vector<std::uint8_t>& floor_seen, const ShadowLimits& shadows,
+                      std::vector<std::uint8_t>& crossed, std::vector<std::uint8_t>& shadow) {
   const int w = occupied.width, h = occupied.height;
   double r_max = 0.0;
   const int c0 = std::max(0, static_cast<int>(std::floor(s_cells.x() - max_range_cells)));
@@ -239,7 +247,7 @@ std::size_t cast_from(const Eigen::Vector2d& s_cells, const std::vector<std::uin
     if (len <= 0.0) continue;
     ++rays;
     ends[static_cast<std::size_t>(b)] =
-        walk(s_cells, (b + 0.5) / to_bin, 0.0, len, occupied, clear_cells, crossed);
+        walk(s_cells, (b + 0.5) / to_bin, 0.0, len, occupied, raised, clear_cells, crossed);
     ends[static_cast<std::size_t>(b)].reach = static_cast<float>(len);
   }
   fill_shadows(s_cells, ends, to_bin, occupied, floor_seen, shadows, shadow);

@@ -24,13 +24,14 @@ struct ShadowLimits {
 std::vector<std::uint8_t> compact_obstacles(const Grid<std::uint8_t>& occupied, double max_cells);
 
 /// 2D rays from one position (s_cells, in cells of the grid): per azimuth bin, to the farthest
-/// low-seen column of the bin, stopping at the first occupied cell beyond clear_cells; the cells
-/// crossed are set in `crossed`, the shadows of free-standing obstacles in `shadow`. Returns the
-/// rays cast.
+/// low-seen column of the bin, stopping at the first occupied cell beyond clear_cells that is not
+/// `raised` (1: a raised obstacle the rays pass beneath; empty: none); the cells crossed (not
+/// occupied) are set in `crossed`, the shadows of free-standing obstacles (cast from the first
+/// occupied cell, raised or not) in `shadow`. Returns the rays cast.
 std::size_t cast_from(const Eigen::Vector2d& s_cells, const std::vector<std::uint8_t>& low_seen,
-                      const Grid<std::uint8_t>& occupied, double max_range_cells,
-                      double clear_cells, const std::vector<std::uint8_t>& floor_seen,
-                      const ShadowLimits& shadows, std::vector<std::uint8_t>& crossed,
-                      std::vector<std::uint8_t>& shadow);
+                      const Grid<std::uint8_t>& occupied, const std::vector<std::uint8_t>& raised,
+                      double max_range_cells, double clear_cells,
+                      const std::vector<std::uint8_t>& floor_seen, const ShadowLimits& shadows,
+                      std::vector<std::uint8_t>& crossed, std::vector<std::uint8_t>& shadow);
 
 }  // namespace indoormap::layout::detail

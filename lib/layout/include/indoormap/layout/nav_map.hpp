@@ -70,6 +70,10 @@ struct NavParams {
   double shadow_max_width_m = 0.8;
   double shadow_min_depth_m = 1.0;
   double scanner_clear_m = 0.3;  ///< occupied cells this close to a position (its tripod) pass
+  /// A raised obstacle, whose body-band points lie at least this high above the floor and within
+  /// 0.15 m of each other, over a floor seen in its own cell (a table top, a chair's seat), does
+  /// not stop a ray: the rays that saw the floor beyond it passed beneath it. It stays occupied.
+  double ray_under_min_m = 0.3;
 };
 
 /// Throws UsageError naming the key (robot.height_m, nav.min_points, ...).
