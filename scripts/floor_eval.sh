@@ -8,7 +8,8 @@
 #   mobile        the same cloud without positions
 # A mode whose pcd-to-map option is missing in this build is reported as "n/a". Prints one row
 # per storey: doors open (share), scanners reachable (components holding scanners; 1 = all
-# reachable), free-space IoU over the seen cells and over all truth-free cells (map.pgm).
+# reachable), free-space IoU over the seen cells and over all truth-free cells (map.pgm), the
+# floor error, and the share of truth furniture that map.pgm calls free (furn_free).
 # Each row is followed by the rooms of that storey (map-eval's "rooms" block; issue 16): truth
 # rooms (corridor included), found / missed / split / merged, rooms within 0.15 m Hausdorff and
 # 3 % area, doors found, objects (>= 0.1 m2) recall / precision and objects in no truth room.
@@ -58,10 +59,11 @@ def f(v): return "-" if v is None else ("%.3f" % v if isinstance(v, float) else 
 parts = ([("-", e)] + [(s["k"], s) for s in e["storeys"]]) if e.get("storeys") else [(0, e)]
 for k, s in parts:
     fl = s.get("floor", {})
-    print("%-28s %2s %8s %6s %10s %8s %8s %9s" % (sys.argv[2], k,
+    print("%-28s %2s %8s %6s %10s %8s %8s %9s %9s" % (sys.argv[2], k,
           f(g(fl, "doors", "open_share")), f(g(fl, "doors", "doors")),
           f(g(fl, "reachability", "components")), f(g(fl, "map", "seen_free_iou", "iou")),
-          f(g(fl, "map", "free_iou_all", "iou")), f(s.get("floor_error_m"))))
+          f(g(fl, "map", "free_iou_all", "iou")), f(s.get("floor_error_m")),
+          f(g(fl, "map", "furniture_free", "share"))))
 PY
 }
 
@@ -85,7 +87,8 @@ for k, s in parts:
 PY
 }
 
-printf "%-28s %2s %8s %6s %10s %8s %8s %9s\n" case st doors_op doors scan_comps seen_iou all_iou floor_err
+printf "%-28s %2s %8s %6s %10s %8s %8s %9s %9s\n" case st doors_op doors scan_comps seen_iou all_iou \
+  floor_err furn_free
 seed_of() { echo $((100 + ${SEED_OFFSET:-0} + $1 * 10 + $2)); }
 for rooms in ${ROOMS:-4 8 12}; do
   for storeys in ${STOREYS:-1 2}; do

@@ -152,6 +152,25 @@ TEST(FloorEval, FarFreeCountsFreeCellsAwayFromEverySeenCell) {
   EXPECT_FALSE(evaluate_far_free(g, seen, g, Mask(12, 1, 0), 0.5).share.has_value());
 }
 
+// Furniture that a map calls free (a table top the robot would be planned under).
+TEST(FloorEval, FurnitureFreeCountsTruthFurnitureTheResultCallsFree) {
+  // 4 x 1 cells of 1 m: free, furniture, furniture, wall. The result (0.5 m cells, 8 x 2) calls
+  // free the left half of the first furniture cell (its centre, 1.5 m, lies on result cell 3).
+  const GridGeometry g({0, 0}, 1.0, 4, 1);
+  Grid<Cell> truth(4, 1, Cell::kFree);
+  truth.at(1, 0) = truth.at(2, 0) = Cell::kFurniture;
+  truth.at(3, 0) = Cell::kWall;
+  const GridGeometry half({0, 0}, 0.5, 8, 2);
+  Mask result(8, 2, 0);
+  result.at(0, 1) = result.at(3, 1) = result.at(7, 1) = 1;  // row 1 holds y 0.5 .. 1.0
+  const FurnitureFree f = evaluate_furniture_free(g, truth, half, result);
+  EXPECT_DOUBLE_EQ(f.furniture_m2, 2.0);
+  EXPECT_DOUBLE_EQ(f.free_m2, 1.0);
+  EXPECT_DOUBLE_EQ(*f.share, 0.5);
+  EXPECT_FALSE(
+      evaluate_furniture_free(g, Grid<Cell>(4, 1, Cell::kFree), half, result).share.has_value());
+}
+
 TEST(FloorEval, ObjectRecallCountsItemsOfTheMinimumAreaPrecisionEverything) {
   auto box = [](std::string id, double x, double side) {
     EvalObject o;

@@ -180,6 +180,9 @@ ordered_json floor_json(const formats::TruthFile& truth, const Grid<Cell>& truth
     } else {
       k["far_free"] = null_note(no_seen);
     }
+    const sim::FurnitureFree ff = sim::evaluate_furniture_free(tg, truth_cells, r.geometry, free);
+    k["furniture_free"] = {
+        {"furniture_m2", ff.furniture_m2}, {"free_m2", ff.free_m2}, {"share", opt(ff.share)}};
     k["wall_faces"] = faces_json(sim::evaluate_wall_faces(tg, truth_cells, r.geometry,
                                                           sim::class_mask(r.cells, Cell::kWall)));
     j[name] = k;

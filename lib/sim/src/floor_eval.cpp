@@ -84,6 +84,20 @@ FarFree evaluate_far_free(const GridGeometry& tg, const Mask& seen, const GridGe
   return f;
 }
 
+FurnitureFree evaluate_furniture_free(const GridGeometry& tg, const Grid<Cell>& truth,
+                                      const GridGeometry& rg, const Mask& result_free) {
+  FurnitureFree f;
+  const double at = tg.cell_m() * tg.cell_m();
+  for (int r = 0; r < tg.height(); ++r)
+    for (int c = 0; c < tg.width(); ++c) {
+      if (truth.at(c, r) != Cell::kFurniture) continue;
+      f.furniture_m2 += at;
+      if (at_or(result_free, rg, tg.center_of({c, r}), false)) f.free_m2 += at;
+    }
+  f.share = ratio(f.free_m2, f.furniture_m2);
+  return f;
+}
+
 FaceScores evaluate_wall_faces(const GridGeometry& tg, const Grid<Cell>& truth,
                                const GridGeometry& rg, const Mask& result_wall) {
   Mask face(truth.width, truth.height, 0);

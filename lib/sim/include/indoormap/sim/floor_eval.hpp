@@ -46,6 +46,18 @@ FarFree evaluate_far_free(const GridGeometry& truth_geometry, const Mask& seen,
                           const GridGeometry& result_geometry, const Mask& result_free,
                           double far_m = 0.5);
 
+struct FurnitureFree {
+  double furniture_m2 = 0.0;    ///< truth furniture area (cells of the truth grid)
+  double free_m2 = 0.0;         ///< of it, cells whose centre lies on a result free cell
+  std::optional<double> share;  ///< free / furniture; empty without truth furniture
+};
+
+/// Furniture the result calls free: truth furniture cells (Cell::kFurniture) whose centre lies
+/// on a result free cell. A robot planned there drives into a table top or a chair; unknown or
+/// occupied is safe. Misregistration along an item's edge counts too (a cell or so).
+FurnitureFree evaluate_furniture_free(const GridGeometry& truth_geometry, const Grid<Cell>& truth,
+                                      const GridGeometry& result_geometry, const Mask& result_free);
+
 struct FaceScores {
   int truth_faces = 0;                   ///< truth wall cells with a 4-neighbour that is truth free
   int result_walls = 0;                  ///< result wall cells
