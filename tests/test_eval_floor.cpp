@@ -155,7 +155,8 @@ TEST(FloorEval, FarFreeCountsFreeCellsAwayFromEverySeenCell) {
 // Furniture that a map calls free (a table top the robot would be planned under).
 TEST(FloorEval, FurnitureFreeCountsTruthFurnitureTheResultCallsFree) {
   // 4 x 1 cells of 1 m: free, furniture, furniture, wall. The result (0.5 m cells, 8 x 2) calls
-  // free the left half of the first furniture cell (its centre, 1.5 m, lies on result cell 3).
+  // free the cell holding the first furniture cell's centre (1.5, 0.5) and cells over the truth's
+  // free and wall cells, which do not count.
   const GridGeometry g({0, 0}, 1.0, 4, 1);
   Grid<Cell> truth(4, 1, Cell::kFree);
   truth.at(1, 0) = truth.at(2, 0) = Cell::kFurniture;
