@@ -148,6 +148,25 @@ TEST(NavMap, TableTopWithMixedPixelsAlongItsEdgeIsNoVeil) {
   EXPECT_EQ(r.specks_dropped, 0);
 }
 
+// A table top seen at a grazing angle: points in every third column of cells (x 6, 9, 12), the
+// floor seen under all of it. The two empty columns between sampled ones are part of the top;
+// the four between the top and a wall's end (x 13-16; the wall at x 17 is no raised obstacle)
+// are not, nor are the six between the wall and another top (x 18-23; top at x 24).
+TEST(NavMap, GapsInASparselySampledTableTopAreClosed) {
+  cloud::VoxelGrid g = room(0.05, 40, 20);
+  for (int y = 0; y < 20; ++y)
+    for (int x = 0; x < 40; ++x) put(g, x, y, 0);
+  for (int y = 6; y < 10; ++y) {
+    for (int x : {6, 9, 12, 24}) put(g, x, y, 15);
+    for (int z = 1; z < 25; ++z) put(g, 17, y, z);  // a wall's end
+  }
+  const NavResult r = build_nav_map(g, 0.025, {}, NavParams{});
+  for (int y = 6; y < 10; ++y) {
+    for (int x = 6; x <= 12; ++x) EXPECT_EQ(at(r, x, y), Cell::kWall) << x << "," << y;
+    for (int x : {13, 14, 15, 16, 18, 23}) EXPECT_EQ(at(r, x, y), Cell::kFree) << x << "," << y;
+  }
+}
+
 // Rays pass beneath a raised obstacle. A scanner at x 0.5 m sees the floor up to x 1.0 m, a table
 // top at 0.75 m over x 1.5-1.7 m, y 0.6-1.7 m with the floor seen under it, and the far wall at
 // x 3.9 m; the floor between the table and the wall was not seen. The rays to the wall's foot

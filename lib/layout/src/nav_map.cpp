@@ -273,6 +273,41 @@ Grid<std::uint8_t> occupied_columns(const Columns& col, const std::vector<std::u
 // layer or two deep), not a wall's face or a backrest.
 constexpr double kRaisedMaxSpanM = 0.15;
 
+// Gaps in a raised obstacle's top: a table top seen at a grazing angle holds a point in every
+// second or third cell, and the floor below the empty ones was seen between the legs. A cell
+// without a body-band point that lies between two raised cells at a shared level, at most
+// kTopGapCells empty cells apart along a row, a column or a diagonal, is part of the top.
+constexpr int kTopGapCells = 3;
+
+void close_top_gaps(const Columns& col, int w, int h, Grid<std::uint8_t>& occupied,
+                    std::vector<std::uint8_t>& raised) {
+  const auto at = [&](int c, int r) { return static_cast<std::size_t>(r) * w + c; };
+  // The first cell with body-band points from (c, r) along (dc, dr), within kTopGapCells + 1
+  // steps; its index and steps, or steps 0.
+  const auto first = [&](int c, int r, int dc, int dr) -> std::pair<std::size_t, int> {
+    for (int k = 1; k <= kTopGapCells + 1; ++k) {
+      const int cc = c + k * dc, rr = r + k * dr;
+      if (cc < 0 || rr < 0 || cc >= w || rr >= h) return {0, 0};
+      if (col.lo[at(cc, rr)] >= 0) return {at(cc, rr), k};
+    }
+    return {0, 0};
+  };
+  std::vector<std::size_t> fill;
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) {
+      if (col.lo[at(c, r)] >= 0) continue;
+      for (const auto& [dc, dr] : {std::pair{1, 0}, {0, 1}, {1, 1}, {1, -1}}) {
+        const auto [a, ka] = first(c, r, dc, dr);
+        const auto [b, kb] = first(c, r, -dc, -dr);
+        if (!ka || !kb || ka + kb - 1 > kTopGapCells || !raised[a] || !raised[b]) continue;
+        if (!(col.bits[a] & spread(col.bits[b]))) continue;
+        fill.push_back(at(c, r));
+        break;
+      }
+    }
+  for (const std::size_t i : fill) occupied.data[i] = raised[i] = 1;
+}
+
 // Columns holding a point more than kDropM below the floor: a hole in the floor (a stairwell, a
 // shaft) shows what lies below it; such a gap in the floor's returns is no floor hole to fill.
 constexpr double kDropM = 0.3;
@@ -321,8 +356,8 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
     cv::morphologyEx(m, m, cv::MORPH_CLOSE, square, {-1, -1}, p.floor_closing_cells);
   }
   const std::vector<std::uint8_t> no_floor;  // the exact ghost filter cleared the veils
-  const Grid<std::uint8_t> occupied = occupied_columns(col, veils_cleared ? no_floor : floor_seen,
-                                                       w, h, p, min_span, r.specks_dropped);
+  Grid<std::uint8_t> occupied = occupied_columns(col, veils_cleared ? no_floor : floor_seen, w, h,
+                                                 p, min_span, r.specks_dropped);
   // Raised obstacles, over a floor seen in their own cell: the rays pass beneath them. Only thin
   // ones (a top, a seat: points within kRaisedMaxSpanM): a wall's face seen above something
   // standing in front of it is no top, and a ray through it would mark the wall's inside seen.
@@ -332,6 +367,7 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
   for (std::size_t i = 0; i < raised.size(); ++i)
     raised[i] = occupied.data[i] && col.floor_seen[i] && col.lo[i] >= raised_lo &&
                 col.hi[i] - col.lo[i] < span;
+  close_top_gaps(col, w, h, occupied, raised);
   for (std::size_t i = 0; i < floor_seen.size(); ++i) floor_seen[i] &= !occupied.data[i];
   std::vector<std::uint8_t> crossed(occupied.size(), 0), shadow(occupied.size(), 0);
   const detail::ShadowLimits shadow_limits{
