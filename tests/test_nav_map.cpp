@@ -32,6 +32,14 @@ void put(cloud::VoxelGrid& g, int x, int y, int z, std::uint16_t n = 5) {
   g.counts[static_cast<std::size_t>(g.index(x, y, z))] = n;
 }
 
+// room() with its whole floor seen (a point in layer 0 of every column).
+cloud::VoxelGrid room_with_seen_floor(double cell_m, int nx, int ny) {
+  cloud::VoxelGrid g = room(cell_m, nx, ny);
+  for (int y = 0; y < ny; ++y)
+    for (int x = 0; x < nx; ++x) put(g, x, y, 0);
+  return g;
+}
+
 Cell at(const NavResult& r, int c, int row) {
   return r.map.at(c, row);
 }
@@ -82,9 +90,7 @@ TEST(NavMap, BodyBandSpecksAndDoorUnderLintel) {
 // would pass the speck rule alone (three layers); together, a scatter over seen floor, they are
 // no obstacle. A leg seen every other layer (a sparse multi-beam scan) stands alone and stays.
 TEST(NavMap, DoorwayVeilOverSeenFloorIsNoObstacle) {
-  auto g = room();
-  for (int y = 0; y < 20; ++y)
-    for (int x = 0; x < 40; ++x) put(g, x, y, 0);
+  auto g = room_with_seen_floor(0.1, 40, 20);
   for (int x = 5; x < 10; ++x)
     for (int y = 8; y < 12; ++y) {
       const int a = (x + y) % 2 ? 1 : 3;  // a checkerboard of two sets of heights
@@ -111,9 +117,7 @@ TEST(NavMap, DoorwayVeilOverSeenFloorIsNoObstacle) {
 // less than nav.min_column_m) beside a doorway veil is part of it; a leg filling five
 // neighbouring layers stands.
 TEST(NavMap, VeilColumnWithAShortRunOfLayersIsNoLeg) {
-  cloud::VoxelGrid g = room(0.05, 20, 20);
-  for (int y = 0; y < 20; ++y)
-    for (int x = 0; x < 20; ++x) put(g, x, y, 0);
+  auto g = room_with_seen_floor(0.05, 20, 20);
   for (int x = 5; x < 10; ++x)
     for (int y = 8; y < 12; ++y) {
       const int a = (x + y) % 2 ? 3 : 5;
@@ -133,9 +137,7 @@ TEST(NavMap, VeilColumnWithAShortRunOfLayersIsNoLeg) {
 // guard the edge columns are scatter at other heights, every top column beside two of them
 // becomes veil, and the whole top is free.
 TEST(NavMap, TableTopWithMixedPixelsAlongItsEdgeIsNoVeil) {
-  cloud::VoxelGrid g = room(0.05, 20, 20);
-  for (int y = 0; y < 20; ++y)
-    for (int x = 0; x < 20; ++x) put(g, x, y, 0);
+  auto g = room_with_seen_floor(0.05, 20, 20);
   for (int x = 6; x < 12; ++x)
     for (int y = 6; y < 10; ++y) {
       put(g, x, y, 15, 6);
@@ -153,9 +155,7 @@ TEST(NavMap, TableTopWithMixedPixelsAlongItsEdgeIsNoVeil) {
 // the four between the top and a wall's end (x 13-16; the wall at x 17 is no raised obstacle)
 // are not, nor are the six between the wall and another top (x 18-23; top at x 24).
 TEST(NavMap, GapsInASparselySampledTableTopAreClosed) {
-  cloud::VoxelGrid g = room(0.05, 40, 20);
-  for (int y = 0; y < 20; ++y)
-    for (int x = 0; x < 40; ++x) put(g, x, y, 0);
+  auto g = room_with_seen_floor(0.05, 40, 20);
   for (int y = 6; y < 10; ++y) {
     for (int x : {6, 9, 12, 24}) put(g, x, y, 15);
     for (int z = 1; z < 25; ++z) put(g, 17, y, z);  // a wall's end
