@@ -256,6 +256,44 @@ TEST(Objects, PocketsTheScannerSawIntoAreNotPartOfTheObject) {
   EXPECT_EQ(blind.labels.at(28, 4), 0);
 }
 
+TEST(Objects, StrayReturnsInABinsShadowDoNotJoinTheShadowToTheBin) {
+  // A bin (0.4 m) with the unseen pocket of its shadow behind it, and in the pocket single
+  // returns at 0.2 m (mixed pixels): without the rule they count as data, the pocket between
+  // them and the bin is "a gap of missed samples" and joins the bin. They lie where the
+  // scanner's ray passed under the bin's top carried over, so they leave the object, and the
+  // pocket with them. A table top sampled with one return per cell at its own level stays.
+  const int w = 40, h = 16;
+  Grid<Cell> L(w, h, Cell::kFree);
+  auto g = voxels(w, h, 40);
+  for (int r = 3; r <= 6; ++r) {
+    for (int c = 20; c <= 29; ++c) L.at(c, r) = Cell::kFurniture;
+    for (int c = 20; c <= 23; ++c) fill_column(g, c, r, 0.0, 0.4);
+  }
+  fill_column(g, 26, 4, 0.2, 0.25, 1);
+  fill_column(g, 26, 5, 0.2, 0.25, 1);
+  for (int r = 10; r <= 13; ++r) {
+    for (int c = 20; c <= 23; ++c) L.at(c, r) = Cell::kFurniture;
+    for (int c = 20; c <= 21; ++c) fill_column(g, c, r, 0.7, 0.75);
+    for (int c = 22; c <= 23; ++c) fill_column(g, c, r, 0.7, 0.75, 1);
+  }
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  ObjectParams p;
+  p.min_area_m2 = 0.0;
+  p.min_seen_area_m2 = 0.0;
+  const std::vector<Eigen::Vector3d> scanner{{0.0, 0.4, 1.3}};
+  const auto res = extract_objects(L, geo, g, flat_layers(), p, scanner);
+  ASSERT_EQ(res.objects.size(), 2u);
+  EXPECT_EQ(res.objects[0].cells, 16);  // the bin alone
+  EXPECT_EQ(res.objects[0].max_cell.col, 23);
+  for (int c = 24; c <= 29; ++c) EXPECT_EQ(res.labels.at(c, 4), 0) << c;
+  EXPECT_EQ(res.objects[1].cells, 16);  // the whole table top
+  // Without the stray returns the same pocket goes as well (the existing pocket rule).
+  auto clean = g;
+  clean.counts[(4 * clean.ny + 4) * clean.nx + 26] = 0;
+  clean.counts[(4 * clean.ny + 5) * clean.nx + 26] = 0;
+  EXPECT_EQ(extract_objects(L, geo, clean, flat_layers(), p, scanner).objects[0].cells, 16);
+}
+
 TEST(Objects, FreeStandingWallComponentsArePillars) {
   // A room with walls all round (the outer ring: large, unknown outside), a round pillar seen
   // from one side (a half ring of wall cells, radius 5 cells) and a square pillar seen on two

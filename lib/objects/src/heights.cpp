@@ -28,6 +28,7 @@ Column column_extent(const cloud::VoxelGrid& g, int col, int row, std::int64_t f
     }
     if (c.bottom < 0) c.bottom = z;
     c.top = z;
+    c.points += g.count(col, row, z);
   }
   return c;
 }
@@ -124,14 +125,82 @@ ColumnScan scan_columns(const Grid<Cell>& layout, const cloud::VoxelGrid& voxels
   return s;
 }
 
+namespace {
+
+// The target of a line-of-sight test over cell (c, r): just above the top layer `top`.
+Eigen::Vector3d top_target(const GridGeometry& geo, const cloud::VoxelGrid& voxels, int c, int r,
+                           std::int64_t top) {
+  return {geo.origin_m().x() + (c + 0.5) * geo.cell_m(),
+          geo.origin_m().y() + (r + 0.5) * geo.cell_m(),
+          voxels.layer_bottom_m(top + 1) + 0.25 * voxels.cell_m};
+}
+
+bool seen_by_a_scanner(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
+                       const std::vector<Eigen::Vector3d>& scanners_map,
+                       const Eigen::Vector3d& target) {
+  for (const auto& sc : scanners_map)
+    if (target.z() < sc.z() - kMinDropBelowScanner_m &&
+        line_of_sight(voxels, sc, target, 1.5 * geo.cell_m()))
+      return true;
+  return false;
+}
+
+// Stray returns (columns of at most kStrayMaxPoints points) at least kStrayBelowTopLayers below
+// the top of the nearest surface cell, where a scanner could have seen that top carried over:
+// the ray that left them passed under the top's level, so the object does not reach them (a
+// mixed pixel in the shadow behind a bin would otherwise join the shadow to the bin). They leave
+// the mask and become cells without data.
+void drop_stray_below_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
+                           const Grid<Column>& cols,
+                           const std::vector<Eigen::Vector3d>& scanners_map, cv::Mat& no_data,
+                           Grid<std::uint8_t>& mask) {
+  const int w = mask.width, h = mask.height;
+  cv::Mat no_surface = no_data.clone();
+  bool any_stray = false, any_surface = false;
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c)
+      if (mask.at(c, r) && cols.at(c, r).top >= 0) {
+        const bool stray = cols.at(c, r).points <= kStrayMaxPoints;
+        no_surface.at<std::uint8_t>(r, c) = stray ? 1 : 0;
+        any_stray = any_stray || stray;
+        any_surface = any_surface || !stray;
+      }
+  if (!any_stray || !any_surface || scanners_map.empty()) return;
+  cv::Mat dist, nearest;
+  cv::distanceTransform(no_surface, dist, nearest, cv::DIST_L2, cv::DIST_MASK_5,
+                        cv::DIST_LABEL_PIXEL);
+  std::vector<CellIndex> seed_of(1, CellIndex{});
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c)
+      if (!no_surface.at<std::uint8_t>(r, c)) {
+        const int lab = nearest.at<int>(r, c);
+        if (static_cast<std::size_t>(lab) >= seed_of.size()) seed_of.resize(lab + 1);
+        seed_of[lab] = {c, r};
+      }
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) {
+      const Column& own = cols.at(c, r);
+      if (!mask.at(c, r) || own.top < 0 || own.points > kStrayMaxPoints) continue;
+      const std::int64_t carried = cols.at(seed_of[nearest.at<int>(r, c)]).top;
+      if (own.top > carried - kStrayBelowTopLayers) continue;
+      if (!seen_by_a_scanner(geo, voxels, scanners_map, top_target(geo, voxels, c, r, carried)))
+        continue;
+      mask.at(c, r) = 0;
+      no_data.at<std::uint8_t>(r, c) = 1;
+    }
+}
+
+}  // namespace
+
 Grid<float> fill_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
                       const ColumnScan& scan, const std::vector<Eigen::Vector3d>& scanners_map,
                       Grid<std::uint8_t>& mask) {
   const int w = mask.width, h = mask.height;
   const Grid<Column>& cols = scan.cols;
   const Grid<std::uint8_t>& pocket = scan.pocket;
-  const cv::Mat& no_data = scan.no_data;
-  const bool any_data = scan.any_data;
+  cv::Mat no_data = scan.no_data.clone();
+  drop_stray_below_tops(geo, voxels, cols, scanners_map, no_data, mask);
+  const bool any_data = scan.any_data && cv::countNonZero(no_data == 0) > 0;
   Grid<float> top(w, h, kNoHeight);
   if (any_data) {
     cv::Mat dist, nearest;
@@ -160,17 +229,11 @@ Grid<float> fill_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
           // scanner that could see it there and saw nothing proves the object ends before it:
           // the shadow behind a bin, fenced in by other obstacles, is not part of the bin.
           if (!pocket.at(c, r) || near_data.at<std::uint8_t>(r, c)) continue;
-          const Eigen::Vector3d target(
-              geo.origin_m().x() + (c + 0.5) * geo.cell_m(),
-              geo.origin_m().y() + (r + 0.5) * geo.cell_m(),
-              voxels.layer_bottom_m(cols.at(s).top + 1) + 0.25 * voxels.cell_m);
-          for (const auto& sc : scanners_map)
-            if (target.z() < sc.z() - kMinDropBelowScanner_m &&
-                line_of_sight(voxels, sc, target, 1.5 * geo.cell_m())) {
-              mask.at(c, r) = 0;
-              top.at(c, r) = kNoHeight;
-              break;
-            }
+          if (seen_by_a_scanner(geo, voxels, scanners_map,
+                                top_target(geo, voxels, c, r, cols.at(s).top))) {
+            mask.at(c, r) = 0;
+            top.at(c, r) = kNoHeight;
+          }
         }
   }
   return top;

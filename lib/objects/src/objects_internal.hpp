@@ -21,7 +21,16 @@ constexpr int kWallFaceCells = 3;
 
 struct Column {
   std::int64_t bottom = -1, top = -1;  // layers; -1: nothing above the floor
+  std::int64_t points = 0;             // points in the layers bottom..top
 };
+
+// A column holding at most this many points is a stray return (a mixed pixel behind an edge, a
+// ghost the filter's sampled rays missed) rather than a surface: a surface seen from a scanner
+// leaves several points in each 5 cm cell it covers (a bin's top 3-12).
+constexpr std::int64_t kStrayMaxPoints = 1;
+// A stray return this many layers or more below the top of the nearest surface, where a scanner
+// could have seen that top carried over, lies where a ray passed under the top's level.
+constexpr std::int64_t kStrayBelowTopLayers = 2;
 
 // The occupied run of a voxel column starting above the floor: the first occupied layer at
 // least two layers above the floor layer (the floor smears into the next one), then upward
