@@ -28,9 +28,10 @@ struct Column {
 // ghost the filter's sampled rays missed) rather than a surface: a surface seen from a scanner
 // leaves several points in each 5 cm cell it covers (a bin's top 3-12).
 constexpr std::int64_t kStrayMaxPoints = 1;
-// A stray return this many layers or more below the top of the nearest surface, where a scanner
-// could have seen that top carried over, lies where a ray passed under the top's level.
-constexpr std::int64_t kStrayBelowTopLayers = 2;
+// A stray return this many layers or more below the top of the nearest surface (a mixed pixel
+// just behind a bin's rim lies one layer down), where a scanner could have seen that top carried
+// over, lies where a ray passed under the top's level.
+constexpr std::int64_t kStrayBelowTopLayers = 1;
 
 // The occupied run of a voxel column starting above the floor: the first occupied layer at
 // least two layers above the floor layer (the floor smears into the next one), then upward
