@@ -61,41 +61,42 @@ TEST(Label, DiagonalNeighboursJoinOnlyWithEightConnectivity) {
 }
 
 TEST(Objects, GeometryHeightsAndWallContactOnAHandMadeRoom) {
-  // 12 x 8 cells of 5 cm; walls on the border. A cabinet 3x2 against the west wall (0.9 m high),
-  // a table 4x3 in the middle (top 0.75 m, legs only at its corners) with a lamp 1.6 m above.
-  const int w = 12, h = 8;
+  // 24 x 16 cells of 5 cm; walls on the border. A cabinet 4x2 against the west wall (0.9 m high;
+  // 0.2 m deep: a thinner piece along a wall is the wall's face), a table 4x3 in the middle (top
+  // 0.75 m, legs only at its corners) with a lamp 1.6 m above.
+  const int w = 24, h = 16;
   Grid<Cell> L(w, h, Cell::kFree);
   for (int c = 0; c < w; ++c) L.at(c, 0) = L.at(c, h - 1) = Cell::kWall;
   for (int r = 0; r < h; ++r) L.at(0, r) = L.at(w - 1, r) = Cell::kWall;
   auto g = voxels(w, h, 60);
-  for (int r = 3; r <= 4; ++r)
-    for (int c = 1; c <= 3; ++c) {
+  for (int r = 7; r <= 8; ++r)
+    for (int c = 1; c <= 4; ++c) {
       L.at(c, r) = Cell::kFurniture;
       fill_column(g, c, r, 0.0, 0.9);
     }
-  for (int r = 2; r <= 4; ++r)
-    for (int c = 6; c <= 9; ++c) {
+  for (int r = 6; r <= 8; ++r)
+    for (int c = 12; c <= 15; ++c) {
       L.at(c, r) = Cell::kFurniture;
       fill_column(g, c, r, 0.70, 0.75);
       fill_column(g, c, r, 2.30, 2.40);  // lamp above: not part of the table
     }
-  fill_column(g, 6, 2, 0.0, 0.7);  // one leg
+  fill_column(g, 12, 6, 0.0, 0.7);  // one leg
   const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
   ObjectParams p;
   p.min_area_m2 = 0.0;
   p.min_seen_area_m2 = 0.0;
   ObjectsResult res = extract_objects(L, geo, g, flat_layers(), p);
   ASSERT_EQ(res.objects.size(), 2u);
-  const auto& table = res.objects[0];  // raster order: row 2 comes first
+  const auto& table = res.objects[0];  // raster order: row 6 comes first
   const auto& cabinet = res.objects[1];
   EXPECT_EQ(table.id, 1);
   EXPECT_EQ(table.cells, 12);
-  EXPECT_EQ(table.start_cell, (CellIndex{6, 2}));
-  EXPECT_EQ(table.min_cell, (CellIndex{6, 2}));
-  EXPECT_EQ(table.max_cell, (CellIndex{9, 4}));
+  EXPECT_EQ(table.start_cell, (CellIndex{12, 6}));
+  EXPECT_EQ(table.min_cell, (CellIndex{12, 6}));
+  EXPECT_EQ(table.max_cell, (CellIndex{15, 8}));
   EXPECT_NEAR(table.area_m2, 12 * 0.0025, 1e-12);
-  EXPECT_NEAR(table.min_m.x(), 0.30, 1e-9);
-  EXPECT_NEAR(table.max_m.y(), 0.25, 1e-9);
+  EXPECT_NEAR(table.min_m.x(), 0.60, 1e-9);
+  EXPECT_NEAR(table.max_m.y(), 0.45, 1e-9);
   EXPECT_NEAR(table.z_max_m, 0.725, 1e-9);  // the top layer's centre, not the lamp
   EXPECT_TRUE(table.on_floor);              // the leg reaches the floor
   EXPECT_FALSE(table.touches_wall);
@@ -104,11 +105,11 @@ TEST(Objects, GeometryHeightsAndWallContactOnAHandMadeRoom) {
   EXPECT_NEAR(table.box.length_m, 3.25 * 0.05, 1e-6);
   EXPECT_NEAR(table.box.width_m, 2.25 * 0.05, 1e-6);
   EXPECT_NEAR(table.box.angle_deg, 0.0, 1.0);
-  EXPECT_EQ(cabinet.cells, 6);
+  EXPECT_EQ(cabinet.cells, 8);
   EXPECT_TRUE(cabinet.touches_wall);
   EXPECT_NEAR(cabinet.z_max_m, 0.875, 1e-9);
   EXPECT_EQ(cabinet.point_count,
-            6u * 2u * 18u);  // 6 columns x 2 points x layers 0..17 (z_min = floor)
+            8u * 2u * 18u);  // 8 columns x 2 points x layers 0..17 (z_min = floor)
   double area2 = 0.0;
   for (std::size_t i = 0; i < table.footprint_m.size(); ++i) {
     const auto& a = table.footprint_m[i];
@@ -292,6 +293,41 @@ TEST(Objects, StrayReturnsInABinsShadowDoNotJoinTheShadowToTheBin) {
   clean.counts[(4 * clean.ny + 4) * clean.nx + 26] = 0;
   clean.counts[(4 * clean.ny + 5) * clean.nx + 26] = 0;
   EXPECT_EQ(extract_objects(L, geo, clean, flat_layers(), p, scanner).objects[0].cells, 16);
+}
+
+TEST(Objects, ThinStripsAlongAWallAreItsFaceNotObjects) {
+  // Walls on the border of a 40 x 30 room. Along the south wall a strip two cells (0.1 m) deep
+  // and 16 long: the wall's face seen in the furniture band (a grazing view). A shelf 7 cells
+  // (0.35 m) deep along the north wall and a bin of 5 x 5 cells in the south-east corner stay.
+  const int w = 40, h = 30;
+  Grid<Cell> L(w, h, Cell::kFree);
+  for (int c = 0; c < w; ++c) L.at(c, 0) = L.at(c, h - 1) = Cell::kWall;
+  for (int r = 0; r < h; ++r) L.at(0, r) = L.at(w - 1, r) = Cell::kWall;
+  auto g = voxels(w, h, 50);
+  auto put = [&](int c0, int c1, int r0, int r1, double top) {
+    for (int r = r0; r <= r1; ++r)
+      for (int c = c0; c <= c1; ++c) {
+        L.at(c, r) = Cell::kFurniture;
+        fill_column(g, c, r, 0.0, top);
+      }
+  };
+  put(8, 23, 1, 2, 1.8);    // the face strip
+  put(8, 23, 22, 28, 1.8);  // the shelf
+  put(34, 38, 1, 5, 0.4);   // the bin in the corner
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  ObjectParams p;
+  p.min_area_m2 = 0.0;
+  p.min_seen_area_m2 = 0.0;
+  const auto res = extract_objects(L, geo, g, flat_layers(), p);
+  ASSERT_EQ(res.objects.size(), 2u);
+  EXPECT_EQ(res.objects[0].cells, 25);  // the bin (row 1 first)
+  EXPECT_EQ(res.objects[1].cells, 7 * 16);
+  EXPECT_EQ(res.labels.at(10, 1), 0);
+  EXPECT_EQ(res.wall_cells.at(10, 1), 1);  // wall to the rooms of a floor
+  EXPECT_EQ(res.wall_cells.at(10, 25), 0);
+  EXPECT_EQ(res.left_over_cells, 32);  // the strip, counted as left over
+  EXPECT_EQ(res.left_over_pieces, 1);
+  EXPECT_NEAR(res.left_over_area_m2, 32 * 0.0025, 1e-12);
 }
 
 TEST(Objects, FreeStandingWallComponentsArePillars) {

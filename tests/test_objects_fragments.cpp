@@ -215,12 +215,14 @@ TEST(ObjectFragments, TheWallUnderAWindowIsNoObject) {
   EXPECT_TRUE(res.objects.empty());
   expect_accounted(L, res, {});
   // Its cells are kept as the wall under a window (the rooms of a floor stop there), and no other.
-  ASSERT_EQ(res.parapets.width, w);
+  ASSERT_EQ(res.wall_cells.width, w);
   int parapet = 0;
   for (int r = 0; r < h; ++r)
     for (int c = 0; c < w; ++c) {
-      parapet += res.parapets.at(c, r);
-      if (res.parapets.at(c, r)) EXPECT_EQ(L.at(c, r), Cell::kFurniture) << c << "," << r;
+      parapet += res.wall_cells.at(c, r);
+      if (res.wall_cells.at(c, r)) {
+        EXPECT_EQ(L.at(c, r), Cell::kFurniture) << c << "," << r;
+      }
     }
   EXPECT_EQ(parapet, 24 * 5);
   // The same cells with nothing above them (a low cabinet along the wall) are an object.
@@ -232,7 +234,7 @@ TEST(ObjectFragments, TheWallUnderAWindowIsNoObject) {
       if (z * g2.cell_m > 2.0) g2.counts[(z * g2.ny + (h - 5)) * g2.nx + c] = 0;
   const auto res2 = extract_objects(L2, geo, g2, flat_layers(), {});
   EXPECT_EQ(res2.objects.size(), 1u);
-  EXPECT_EQ(std::count(res2.parapets.data.begin(), res2.parapets.data.end(), 1), 0);
+  EXPECT_EQ(std::count(res2.wall_cells.data.begin(), res2.wall_cells.data.end(), 1), 0);
 }
 
 // A cabinet under a window (0.5 m deep, touching the wall below the sill) keeps its place: the

@@ -21,13 +21,13 @@ StoreyRooms find_storey_rooms(const layout::MapResult& m, objects::ObjectsResult
   r.rooms = rooms::find_rooms(m.nav.map, m.geometry, params);
   r.inner_walls = rooms::inner_wall_objects(objs, m.geometry, r.rooms, params);
   // The polygons reach the walls of M_r (behind furniture too), never into an inner-wall strip
-  // or the wall under a window.
+  // or a piece the objects step took for wall (the wall under a window, a wall's face).
   Grid<std::uint8_t> blocked(objs.labels.width, objs.labels.height, 0);
-  const bool parapets = objs.parapets.data.size() == blocked.data.size();
+  const bool wall_cells = objs.wall_cells.data.size() == blocked.data.size();
   for (std::size_t i = 0; i < objs.labels.data.size(); ++i)
     blocked.data[i] = std::find(r.inner_walls.begin(), r.inner_walls.end(), objs.labels.data[i]) !=
                           r.inner_walls.end() ||
-                      (parapets && objs.parapets.data[i]);
+                      (wall_cells && objs.wall_cells.data[i]);
   rooms::fill_rooms(r.rooms, m.layout.layout, blocked);
   r.fitted = rooms::fit_rooms_to_faces(r.rooms, m.layout.layout, border_params);
   rooms::remove_objects(objs, r.inner_walls);

@@ -3,6 +3,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <opencv2/imgproc.hpp>
 
 #include "indoormap/core/errors.hpp"
 #include "objects_internal.hpp"
@@ -188,11 +189,11 @@ void list_objects(const std::vector<Acc>& acc, const Labels& lab, const GridGeom
     }
     res.objects.push_back(std::move(o));
   }
-  res.parapets = Grid<std::uint8_t>(w, h, 0);
+  res.wall_cells = Grid<std::uint8_t>(w, h, 0);
   for (int r = 0; r < h; ++r)
     for (int c = 0; c < w; ++c) {
       res.labels.at(c, r) = new_id[lab.labels.at(c, r)];
-      res.parapets.at(c, r) = parapet[lab.labels.at(c, r)];
+      res.wall_cells.at(c, r) = parapet[lab.labels.at(c, r)];
     }
 }
 
@@ -211,6 +212,41 @@ void measure_objects(const GridGeometry& geo, const cloud::VoxelGrid& voxels, Ob
                ++z)
             o.point_count += voxels.count(c, r, z);
   }
+}
+
+// A piece lying almost wholly within kWallFaceCells of a wall, and longer along the wall than
+// across, is the wall's face seen in the furniture band without its wall-band part (the far face
+// of a wall seen at a grazing angle, a doorway's reveal under its lintel, the face of a wall
+// whose top ends in a low room), not furniture standing in front of the wall: the thinnest item
+// (a shelf, 0.3 m deep) reaches beyond that zone (0.15 m). A compact piece (a bin in a corner)
+// stays. Such pieces leave the list, count as left over and are marked in wall_cells.
+void drop_wall_faces(const Grid<Cell>& layout, ObjectsResult& res) {
+  constexpr double kMinFaceShare = 0.8, kMinElongation = 1.5;
+  cv::Mat wall(layout.height, layout.width, CV_8U);
+  for (int r = 0; r < layout.height; ++r)
+    for (int c = 0; c < layout.width; ++c)
+      wall.at<std::uint8_t>(r, c) = layout.at(c, r) == Cell::kWall ? 1 : 0;
+  cv::dilate(
+      wall, wall,
+      cv::getStructuringElement(cv::MORPH_RECT, {2 * kWallFaceCells + 1, 2 * kWallFaceCells + 1}));
+  std::erase_if(res.objects, [&](const FurnitureObject& o) {
+    if (o.kind != ObjectKind::kFurniture || !o.own_cells.empty()) return false;
+    if (o.box.length_m < kMinElongation * o.box.width_m) return false;
+    std::int64_t near = 0;
+    for (int r = o.min_cell.row; r <= o.max_cell.row; ++r)
+      for (int c = o.min_cell.col; c <= o.max_cell.col; ++c)
+        near += res.labels.at(c, r) == o.id && wall.at<std::uint8_t>(r, c);
+    if (static_cast<double>(near) < kMinFaceShare * static_cast<double>(o.cells)) return false;
+    for (int r = o.min_cell.row; r <= o.max_cell.row; ++r)
+      for (int c = o.min_cell.col; c <= o.max_cell.col; ++c)
+        if (res.labels.at(c, r) == o.id) {
+          res.labels.at(c, r) = 0;
+          res.wall_cells.at(c, r) = 1;
+        }
+    res.left_over_cells += o.cells;
+    ++res.left_over_pieces;
+    return true;
+  });
 }
 
 }  // namespace
@@ -247,6 +283,8 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
     res.left_over_cells += layout.data[i] == Cell::kFurniture && res.labels.data[i] == 0;
   res.left_over_area_m2 = static_cast<double>(res.left_over_cells) * geo.cell_m() * geo.cell_m();
   measure_objects(geo, voxels, res);
+  drop_wall_faces(layout, res);
+  res.left_over_area_m2 = static_cast<double>(res.left_over_cells) * geo.cell_m() * geo.cell_m();
   if (params.pillar_max_extent_m > 0) add_pillars(layout, geo, voxels, layers, params, res);
   if (params.lamp_max_extent_m > 0) add_lamps(layout, geo, voxels, layers, params, res);
   // No object below the minimum area, of any kind (a pillar's or a lamp's area is its fitted

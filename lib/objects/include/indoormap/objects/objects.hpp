@@ -100,10 +100,11 @@ struct ObjectsResult {
   /// nothing stands there). furniture cells = cells of the furniture-class objects + these.
   std::int64_t left_over_cells = 0;
   double left_over_area_m2 = 0.0;
-  std::int64_t left_over_pieces = 0;  ///< pieces not listed (too small, or too little seen)
-  /// 1 on the cells of the pieces taken for the wall under a window (a parapet under a lintel):
-  /// no object, and wall to the rooms of a floor (a room's polygon ends at the wall's face).
-  Grid<std::uint8_t> parapets;
+  std::int64_t left_over_pieces = 0;  ///< pieces not listed (too small, too little seen, wall)
+  /// 1 on the cells of the pieces taken for wall, not objects: the wall under a window (a
+  /// parapet under a lintel) and a wall's face seen in the furniture band (a thin strip along a
+  /// wall). Wall to the rooms of a floor too (a room's polygon ends at the wall's face).
+  Grid<std::uint8_t> wall_cells;
 };
 
 /// Finds the objects of the furniture class. voxels supplies heights; it must cover the layout's
