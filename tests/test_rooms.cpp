@@ -122,6 +122,34 @@ TEST(Rooms, InnerWallStripIsDroppedFurnitureStays) {
   EXPECT_EQ(rooms::object_rooms(objs, r), std::vector<int>{2});
 }
 
+// M_r holds the door's lintel: wall along both faces of the passage, its inside unseen. The
+// segmentation split the passage along a diagonal (jamb corner to jamb corner), so the cells it
+// gave each room are not closed along the door's axis and the passage cut leaves them; they are
+// cut off from the room by the lintel's face, so the room keeps only its main part and its
+// outline ends at its own face.
+TEST(Rooms, PassagePiecesBeyondTheLintelLeaveTheRoom) {
+  const TwoRooms t;
+  rooms::RoomsResult r = rooms::find_rooms(t.nav, t.geometry);
+  ASSERT_EQ(r.rooms.size(), 2u);
+  ASSERT_EQ(r.doors.size(), 1u);
+  Grid<Cell> layout = t.nav;
+  for (int row = 13; row < 29; ++row) {
+    layout.at(61, row) = layout.at(64, row) = Cell::kWall;
+    layout.at(62, row) = layout.at(63, row) = Cell::kUnknown;
+    for (int c = 61; c <= 64; ++c)  // below the diagonal: room 1, above: room 2
+      r.labels.at(c, row) = static_cast<std::uint16_t>(4 * (c - 61) < (row - 13) ? 1 : 2);
+  }
+  r.doors[0].end0_m = {3.05, 0.65};
+  r.doors[0].end1_m = {3.25, 1.45};
+  rooms::fill_rooms(r, layout, {});
+  const int left = rooms::room_at(r, {1.5, 1.0}), right = rooms::room_at(r, {4.8, 1.0});
+  ASSERT_EQ(left, 1);
+  ASSERT_EQ(right, 2);
+  for (const auto& v : r.rooms[0].polygon_m) EXPECT_LE(v.x(), 3.05 + 0.03);
+  for (const auto& v : r.rooms[1].polygon_m) EXPECT_GE(v.x(), 3.25 - 0.03);
+  EXPECT_EQ(r.labels.at(62, 27), 1);  // the segmentation's labels stay as they were
+}
+
 namespace {
 
 // Two rooms 4 x 3 m side by side, the whole rotated by 30 degrees about the origin, 0.2 m walls

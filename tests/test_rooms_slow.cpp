@@ -112,9 +112,13 @@ TEST(RoomsApp, InnerWallsAreNotFurniture) {
                               off.string() + " -o " + (off / "eval").string());
   ASSERT_EQ(m.exit_code, 0) << m.err;
   const json eo = rooms_read_json(off / "eval" / "eval.json");
-  EXPECT_GT(eo["rooms"]["objects_outside_rooms"].get<int>(),
+  // The objects step's own rule for a wall's face (thin strips along a wall, 2026-12-06) now
+  // drops the strips whose centre lay in no room even with both rules off; the wider pieces of
+  // the walls' insides stay and cost precision.
+  EXPECT_GE(eo["rooms"]["objects_outside_rooms"].get<int>(),
             e["rooms"]["objects_outside_rooms"].get<int>());
-  EXPECT_LT(eo["objects"]["precision"].get<double>(), e["objects"]["precision"].get<double>());
+  EXPECT_LT(eo["objects"]["precision"].get<double>(), e["objects"]["precision"].get<double>())
+      << "rules off: " << eo["objects"].dump() << "\non: " << e["objects"].dump();
 }
 
 TEST(RoomsApp, TwoStoreysEachWithItsRooms) {

@@ -153,6 +153,46 @@ void rooms_cut_passages(const RoomsResult& out, Grid<std::uint16_t>& grown) {
   }
 }
 
+/// Each room keeps only its largest 4-connected part. With M_r's walls taken out, a door's
+/// passage is cut off from the room by the lintel's faces (M_r's wall band holds the lintel); the
+/// pieces of the passage the segmentation gave the room would otherwise stay in its outline, and
+/// the fit to the faces would follow the jambs into the door.
+void keep_main_parts(Grid<std::uint16_t>& grown) {
+  const int w = grown.width, h = grown.height;
+  Grid<int> part(w, h, 0);
+  std::vector<std::int64_t> size(1, 0);
+  std::vector<std::uint16_t> room_of(1, 0);
+  std::vector<CellIndex> stack;
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) {
+      const std::uint16_t id = grown.at(c, r);
+      if (!id || part.at(c, r)) continue;
+      const int p = static_cast<int>(size.size());
+      size.push_back(0);
+      room_of.push_back(id);
+      part.at(c, r) = p;
+      stack.push_back({c, r});
+      while (!stack.empty()) {
+        const CellIndex at = stack.back();
+        stack.pop_back();
+        ++size[static_cast<std::size_t>(p)];
+        for (const auto& [dc, dr] :
+             {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+          const int nc = at.col + dc, nr = at.row + dr;
+          if (!grown.contains(nc, nr) || grown.at(nc, nr) != id || part.at(nc, nr)) continue;
+          part.at(nc, nr) = p;
+          stack.push_back({nc, nr});
+        }
+      }
+    }
+  std::vector<int> best(65536, 0);
+  for (std::size_t p = 1; p < size.size(); ++p)
+    if (!best[room_of[p]] || size[p] > size[static_cast<std::size_t>(best[room_of[p]])])
+      best[room_of[p]] = static_cast<int>(p);
+  for (std::size_t i = 0; i < grown.data.size(); ++i)
+    if (grown.data[i] && best[grown.data[i]] != part.data[i]) grown.data[i] = 0;
+}
+
 }  // namespace
 
 void fill_rooms(RoomsResult& out, const Grid<Cell>& layout, const Grid<std::uint8_t>& blocked,
@@ -174,11 +214,12 @@ void fill_rooms(RoomsResult& out, const Grid<Cell>& layout, const Grid<std::uint
     for (int c = 0; c < labels.width; ++c) {
       if (!grown.at(c, r)) continue;
       const Cell l = layout.at(c, r);
-      if (l == Cell::kWall || (has_blocked && blocked.at(c, r)))
-        grown.at(c, r) = 0;
-      else
-        queue.push_back({c, r});
+      if (l == Cell::kWall || (has_blocked && blocked.at(c, r))) grown.at(c, r) = 0;
     }
+  keep_main_parts(grown);
+  for (int r = 0; r < labels.height; ++r)
+    for (int c = 0; c < labels.width; ++c)
+      if (grown.at(c, r)) queue.push_back({c, r});
   const int max_steps = static_cast<int>(std::lround(max_fill_m / out.geometry.cell_m()));
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const CellIndex at = queue[head];
