@@ -237,6 +237,7 @@ TEST(Objects, PocketsTheScannerSawIntoAreNotPartOfTheObject) {
     for (int c = 20; c <= 23; ++c) L.at(c, r) = Cell::kFurniture;
     fill_column(g, 20, r, 0.0, 1.8);
   }
+  for (int r = 0; r < h; ++r) fill_column(g, 31, r, 0.0, 1.9);  // the wall behind
   const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
   ObjectParams p;
   p.min_area_m2 = 0.0;
@@ -257,6 +258,36 @@ TEST(Objects, PocketsTheScannerSawIntoAreNotPartOfTheObject) {
   EXPECT_EQ(blind.labels.at(28, 4), 0);
 }
 
+TEST(Objects, AnEmptyPocketIsNoEvidenceWhereNoBeamPassed) {
+  // A cabinet (1.0 m) against a wall, seen from 1.3 m by a sparse scan: its front face and one
+  // row of its top, the rest of the top between the beams. The line from the scanner over the
+  // top is clear, but continued beyond the pocket cells it meets nothing recorded (the wall's
+  // foot is hidden behind the cabinet, and past the wall there is nothing): no beam passed there,
+  // so the empty cells prove nothing and the cabinet keeps its depth. A bin's shadow, with the
+  // wall behind it seen above the bin, goes (PocketsTheScannerSawIntoAreNotPartOfTheObject).
+  const int w = 34, h = 12;
+  Grid<Cell> L(w, h, Cell::kFree);
+  auto g = voxels(w, h, 50);
+  for (int r = 3; r <= 8; ++r) {
+    for (int c = 20; c <= 29; ++c) L.at(c, r) = Cell::kFurniture;
+    fill_column(g, 20, r, 0.0, 1.0);   // the front face
+    fill_column(g, 21, r, 0.95, 1.0);  // one row of the top
+  }
+  for (int r = 0; r < h; ++r) {
+    L.at(30, r) = L.at(31, r) = Cell::kWall;
+    // The wall is seen from 1.2 m up only (the sparse rows above the cabinet's top).
+    for (int c = 30; c <= 31; ++c) fill_column(g, c, r, 1.2, 2.4);
+  }
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  ObjectParams p;
+  p.min_area_m2 = 0.0;
+  p.min_seen_area_m2 = 0.0;
+  const std::vector<Eigen::Vector3d> scanner{{0.0, 0.3, 1.3}};
+  const auto res = extract_objects(L, geo, g, flat_layers(), p, scanner);
+  ASSERT_EQ(res.objects.size(), 1u);
+  EXPECT_EQ(res.objects[0].cells, 60);
+}
+
 TEST(Objects, StrayReturnsInABinsShadowDoNotJoinTheShadowToTheBin) {
   // A bin (0.4 m) with the unseen pocket of its shadow behind it, and in the pocket single
   // returns at 0.2 m (mixed pixels): without the rule they count as data, the pocket between
@@ -272,6 +303,7 @@ TEST(Objects, StrayReturnsInABinsShadowDoNotJoinTheShadowToTheBin) {
   }
   fill_column(g, 26, 4, 0.2, 0.25, 1);
   fill_column(g, 26, 5, 0.2, 0.25, 1);
+  for (int r = 0; r < h; ++r) fill_column(g, 31, r, 0.0, 1.9);  // the wall behind
   for (int r = 10; r <= 13; ++r) {
     for (int c = 20; c <= 23; ++c) L.at(c, r) = Cell::kFurniture;
     for (int c = 20; c <= 21; ++c) fill_column(g, c, r, 0.7, 0.75);

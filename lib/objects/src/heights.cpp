@@ -60,6 +60,18 @@ bool line_of_sight(const cloud::VoxelGrid& g, const Eigen::Vector3d& scanner,
   return true;
 }
 
+bool return_beyond(const cloud::VoxelGrid& g, const Eigen::Vector3d& scanner,
+                   const Eigen::Vector3d& target, double max_m) {
+  const Eigen::Vector3d d = (target - scanner).normalized();
+  const double step = 0.5 * g.cell_m;
+  for (double t = step; t <= max_m; t += step) {
+    const VoxelIndex v = g.voxel_of(target + t * d);
+    if (!g.contains(v)) return false;
+    if (g.count(v.ix, v.iy, v.iz)) return true;
+  }
+  return false;
+}
+
 bool lintel_above(const cloud::VoxelGrid& g, int col, int row, std::int64_t floor_layer,
                   std::int64_t ceiling_layer, std::int64_t min_gap, std::int64_t min_run) {
   std::int64_t last = floor_layer, run_start = -1;  // last occupied layer below the run
@@ -140,7 +152,8 @@ bool seen_by_a_scanner(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
                        const Eigen::Vector3d& target) {
   for (const auto& sc : scanners_map)
     if (target.z() < sc.z() - kMinDropBelowScanner_m &&
-        line_of_sight(voxels, sc, target, 1.5 * geo.cell_m()))
+        line_of_sight(voxels, sc, target, 1.5 * geo.cell_m()) &&
+        return_beyond(voxels, sc, target, kMaxBeyond_m))
       return true;
   return false;
 }

@@ -47,6 +47,15 @@ bool floor_seen(const cloud::VoxelGrid& g, int col, int row, std::int64_t floor_
 bool line_of_sight(const cloud::VoxelGrid& g, const Eigen::Vector3d& scanner,
                    const Eigen::Vector3d& target, double skip_end_m);
 
+// True when the line from the scanner through `target`, continued beyond it for at most max_m,
+// meets an occupied voxel before leaving the grid: a return was recorded behind the target on
+// that line, so a beam passed there (on a sparse scan most lines fall between the beams, and an
+// empty target then proves nothing).
+bool return_beyond(const cloud::VoxelGrid& g, const Eigen::Vector3d& scanner,
+                   const Eigen::Vector3d& target, double max_m);
+// How far beyond a pocket return_beyond looks (a wall or the floor behind a shadow is nearer).
+constexpr double kMaxBeyond_m = 10.0;
+
 // A window's lintel over a furniture cell (furniture-extract.md, step 4): above the cell's lowest
 // occupied run (or the floor), an empty gap of at least min_gap layers (the opening), then a run
 // of at least min_run consecutive occupied layers that reaches the ceiling (ceiling_layer - 2)
