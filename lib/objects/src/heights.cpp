@@ -147,6 +147,8 @@ Eigen::Vector3d top_target(const GridGeometry& geo, const cloud::VoxelGrid& voxe
           voxels.layer_bottom_m(top + 1) + 0.25 * voxels.cell_m};
 }
 
+// Some scanner's line to the target is clear and, continued, ends on a recorded return: had
+// something stood at the target, that beam would have met it.
 bool seen_by_a_scanner(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
                        const std::vector<Eigen::Vector3d>& scanners_map,
                        const Eigen::Vector3d& target) {
@@ -240,7 +242,8 @@ Grid<float> fill_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
           // A pocket cell (no data, floor unseen) is the hidden part of the object next to it
           // only if that object's top surface, carried over the cell, would be hidden too. A
           // scanner that could see it there and saw nothing proves the object ends before it:
-          // the shadow behind a bin, fenced in by other obstacles, is not part of the bin.
+          // the shadow behind a bin, fenced in by other obstacles, is not part of the bin (where
+          // a beam passed: seen_by_a_scanner).
           if (!pocket.at(c, r) || near_data.at<std::uint8_t>(r, c)) continue;
           if (seen_by_a_scanner(geo, voxels, scanners_map,
                                 top_target(geo, voxels, c, r, cols.at(s).top))) {

@@ -281,7 +281,6 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
   res.left_over_pieces = lab.count - static_cast<std::int64_t>(res.objects.size());
   for (std::size_t i = 0; i < layout.size(); ++i)
     res.left_over_cells += layout.data[i] == Cell::kFurniture && res.labels.data[i] == 0;
-  res.left_over_area_m2 = static_cast<double>(res.left_over_cells) * geo.cell_m() * geo.cell_m();
   measure_objects(geo, voxels, res);
   drop_wall_faces(layout, res);
   res.left_over_area_m2 = static_cast<double>(res.left_over_cells) * geo.cell_m() * geo.cell_m();
