@@ -139,6 +139,24 @@ ColumnScan scan_columns(const Grid<Cell>& layout, const cloud::VoxelGrid& voxels
 
 namespace {
 
+// For every cell, the nearest cell (L2) where no_data is 0; there must be one.
+Grid<CellIndex> nearest_data(const cv::Mat& no_data) {
+  cv::Mat dist, label;
+  cv::distanceTransform(no_data, dist, label, cv::DIST_L2, cv::DIST_MASK_5, cv::DIST_LABEL_PIXEL);
+  std::vector<CellIndex> seed_of(1, CellIndex{});  // label -> data cell
+  for (int r = 0; r < no_data.rows; ++r)
+    for (int c = 0; c < no_data.cols; ++c)
+      if (!no_data.at<std::uint8_t>(r, c)) {
+        const int lab = label.at<int>(r, c);
+        if (static_cast<std::size_t>(lab) >= seed_of.size()) seed_of.resize(lab + 1);
+        seed_of[lab] = {c, r};
+      }
+  Grid<CellIndex> out(no_data.cols, no_data.rows);
+  for (int r = 0; r < no_data.rows; ++r)
+    for (int c = 0; c < no_data.cols; ++c) out.at(c, r) = seed_of[label.at<int>(r, c)];
+  return out;
+}
+
 // The target of a line-of-sight test over cell (c, r): just above the top layer `top`.
 Eigen::Vector3d top_target(const GridGeometry& geo, const cloud::VoxelGrid& voxels, int c, int r,
                            std::int64_t top) {
@@ -181,22 +199,12 @@ void drop_stray_below_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxe
         any_surface = any_surface || !stray;
       }
   if (!any_stray || !any_surface || scanners_map.empty()) return;
-  cv::Mat dist, nearest;
-  cv::distanceTransform(no_surface, dist, nearest, cv::DIST_L2, cv::DIST_MASK_5,
-                        cv::DIST_LABEL_PIXEL);
-  std::vector<CellIndex> seed_of(1, CellIndex{});
-  for (int r = 0; r < h; ++r)
-    for (int c = 0; c < w; ++c)
-      if (!no_surface.at<std::uint8_t>(r, c)) {
-        const int lab = nearest.at<int>(r, c);
-        if (static_cast<std::size_t>(lab) >= seed_of.size()) seed_of.resize(lab + 1);
-        seed_of[lab] = {c, r};
-      }
+  const Grid<CellIndex> surface = nearest_data(no_surface);
   for (int r = 0; r < h; ++r)
     for (int c = 0; c < w; ++c) {
       const Column& own = cols.at(c, r);
       if (!mask.at(c, r) || own.top < 0 || own.points > kStrayMaxPoints) continue;
-      const std::int64_t carried = cols.at(seed_of[nearest.at<int>(r, c)]).top;
+      const std::int64_t carried = cols.at(surface.at(c, r)).top;
       if (own.top > carried - kStrayBelowTopLayers) continue;
       if (!seen_by_a_scanner(geo, voxels, scanners_map, top_target(geo, voxels, c, r, carried)))
         continue;
@@ -218,10 +226,7 @@ Grid<float> fill_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
   const bool any_data = scan.any_data && cv::countNonZero(no_data == 0) > 0;
   Grid<float> top(w, h, kNoHeight);
   if (any_data) {
-    cv::Mat dist, nearest;
-    cv::distanceTransform(no_data, dist, nearest, cv::DIST_L2, cv::DIST_MASK_5,
-                          cv::DIST_LABEL_PIXEL);
-    std::vector<CellIndex> seed_of(1, CellIndex{});  // label -> data cell
+    const Grid<CellIndex> nearest = nearest_data(no_data);
     // Gaps of a few cells between data cells are missed samples (a top seen at a grazing angle),
     // not evidence of an empty cell.
     cv::Mat near_data;
@@ -229,15 +234,8 @@ Grid<float> fill_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
                      cv::getStructuringElement(cv::MORPH_RECT, {3, 3}), {-1, -1}, 2);
     for (int r = 0; r < h; ++r)
       for (int c = 0; c < w; ++c)
-        if (!no_data.at<std::uint8_t>(r, c)) {
-          const int lab = nearest.at<int>(r, c);
-          if (static_cast<std::size_t>(lab) >= seed_of.size()) seed_of.resize(lab + 1);
-          seed_of[lab] = {c, r};
-        }
-    for (int r = 0; r < h; ++r)
-      for (int c = 0; c < w; ++c)
         if (mask.at(c, r)) {
-          const CellIndex s = seed_of[nearest.at<int>(r, c)];
+          const CellIndex s = nearest.at(c, r);
           top.at(c, r) = static_cast<float>(voxels.layer_center_m(cols.at(s).top));
           // A pocket cell (no data, floor unseen) is the hidden part of the object next to it
           // only if that object's top surface, carried over the cell, would be hidden too. A
