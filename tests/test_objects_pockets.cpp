@@ -1,0 +1,153 @@
+// Furniture objects next to what the scanner could not see: unseen pockets behind an object,
+// stray returns in its shadow, a wall's face seen in the furniture band (furniture-extract.md,
+// steps 4 and 5). Hand-made voxel grids of 5 cm cells with the scanner positions given.
+#include <gtest/gtest.h>
+
+#include "indoormap/objects/objects.hpp"
+#include "objects_fixtures.hpp"
+
+using namespace indoormap;
+using namespace indoormap::objects;
+using namespace objects_fixtures;
+
+TEST(Objects, PocketsTheScannerSawIntoAreNotPartOfTheObject) {
+  // A bin (0.4 m) with a pocket of furniture cells behind it (fenced in by other obstacles in the
+  // layout; no data in them), and a shelf (1.8 m, above the scanner) with its hidden body behind
+  // its front face. The scanner at 1.3 m would have seen the bin's top over the pocket: the pocket
+  // is not the bin. It cannot see a shelf's top: the body stays.
+  const int w = 40, h = 16;
+  Grid<Cell> L(w, h, Cell::kFree);
+  auto g = voxels(w, h, 40);
+  for (int r = 3; r <= 6; ++r) {
+    for (int c = 20; c <= 29; ++c) L.at(c, r) = Cell::kFurniture;
+    for (int c = 20; c <= 23; ++c) fill_column(g, c, r, 0.0, 0.4);
+    for (int c = 27; c <= 29; ++c) fill_column(g, c, r, 0.0, 0.05);  // the floor seen there
+  }
+  for (int r = 10; r <= 13; ++r) {
+    for (int c = 20; c <= 23; ++c) L.at(c, r) = Cell::kFurniture;
+    fill_column(g, 20, r, 0.0, 1.8);
+  }
+  for (int r = 0; r < h; ++r) fill_column(g, 31, r, 0.0, 1.9);  // the wall behind
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  ObjectParams p;
+  p.min_area_m2 = 0.0;
+  p.min_seen_area_m2 = 0.0;
+  const std::vector<Eigen::Vector3d> scanner{{0.0, 0.4, 1.3}};
+  const auto res = extract_objects(L, geo, g, flat_layers(), p, scanner);
+  ASSERT_EQ(res.objects.size(), 2u);
+  EXPECT_EQ(res.objects[0].cells, 16);  // the bin alone
+  EXPECT_EQ(res.objects[0].max_cell.col, 23);
+  EXPECT_EQ(res.labels.at(25, 4), 0);
+  EXPECT_EQ(res.objects[1].cells, 16);  // the shelf with its hidden body
+  EXPECT_NEAR(res.objects[1].z_max_m, 1.775, 1e-9);
+  // Without a scanner position there is no evidence about the unseen pocket cells; the cells
+  // whose floor was seen still go.
+  const auto blind = extract_objects(L, geo, g, flat_layers(), p);
+  ASSERT_EQ(blind.objects.size(), 2u);
+  EXPECT_EQ(blind.objects[0].cells, 16 + 12);
+  EXPECT_EQ(blind.labels.at(28, 4), 0);
+}
+
+TEST(Objects, AnEmptyPocketIsNoEvidenceWhereNoBeamPassed) {
+  // A cabinet (1.0 m) against a wall, seen from 1.3 m by a sparse scan: its front face and one
+  // row of its top, the rest of the top between the beams. The line from the scanner over the
+  // top is clear, but continued beyond the pocket cells it meets nothing recorded (the wall's
+  // foot is hidden behind the cabinet, and past the wall there is nothing): no beam passed there,
+  // so the empty cells prove nothing and the cabinet keeps its depth. A bin's shadow, with the
+  // wall behind it seen above the bin, goes (PocketsTheScannerSawIntoAreNotPartOfTheObject).
+  const int w = 34, h = 12;
+  Grid<Cell> L(w, h, Cell::kFree);
+  auto g = voxels(w, h, 50);
+  for (int r = 3; r <= 8; ++r) {
+    for (int c = 20; c <= 29; ++c) L.at(c, r) = Cell::kFurniture;
+    fill_column(g, 20, r, 0.0, 1.0);   // the front face
+    fill_column(g, 21, r, 0.95, 1.0);  // one row of the top
+  }
+  for (int r = 0; r < h; ++r) {
+    L.at(30, r) = L.at(31, r) = Cell::kWall;
+    // The wall is seen from 1.2 m up only (the sparse rows above the cabinet's top).
+    for (int c = 30; c <= 31; ++c) fill_column(g, c, r, 1.2, 2.4);
+  }
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  ObjectParams p;
+  p.min_area_m2 = 0.0;
+  p.min_seen_area_m2 = 0.0;
+  const std::vector<Eigen::Vector3d> scanner{{0.0, 0.3, 1.3}};
+  const auto res = extract_objects(L, geo, g, flat_layers(), p, scanner);
+  ASSERT_EQ(res.objects.size(), 1u);
+  EXPECT_EQ(res.objects[0].cells, 60);
+}
+
+TEST(Objects, StrayReturnsInABinsShadowDoNotJoinTheShadowToTheBin) {
+  // A bin (0.4 m) with the unseen pocket of its shadow behind it, and in the pocket single
+  // returns at 0.2 m (mixed pixels): without the rule they count as data, the pocket between
+  // them and the bin is "a gap of missed samples" and joins the bin. They lie where the
+  // scanner's ray passed under the bin's top carried over, so they leave the object, and the
+  // pocket with them. A table top sampled with one return per cell at its own level stays.
+  const int w = 40, h = 16;
+  Grid<Cell> L(w, h, Cell::kFree);
+  auto g = voxels(w, h, 40);
+  for (int r = 3; r <= 6; ++r) {
+    for (int c = 20; c <= 29; ++c) L.at(c, r) = Cell::kFurniture;
+    for (int c = 20; c <= 23; ++c) fill_column(g, c, r, 0.0, 0.4);
+  }
+  fill_column(g, 26, 4, 0.2, 0.25, 1);
+  fill_column(g, 26, 5, 0.2, 0.25, 1);
+  for (int r = 0; r < h; ++r) fill_column(g, 31, r, 0.0, 1.9);  // the wall behind
+  for (int r = 10; r <= 13; ++r) {
+    for (int c = 20; c <= 23; ++c) L.at(c, r) = Cell::kFurniture;
+    for (int c = 20; c <= 21; ++c) fill_column(g, c, r, 0.7, 0.75);
+    for (int c = 22; c <= 23; ++c) fill_column(g, c, r, 0.7, 0.75, 1);
+  }
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  ObjectParams p;
+  p.min_area_m2 = 0.0;
+  p.min_seen_area_m2 = 0.0;
+  const std::vector<Eigen::Vector3d> scanner{{0.0, 0.4, 1.3}};
+  const auto res = extract_objects(L, geo, g, flat_layers(), p, scanner);
+  ASSERT_EQ(res.objects.size(), 2u);
+  EXPECT_EQ(res.objects[0].cells, 16);  // the bin alone
+  EXPECT_EQ(res.objects[0].max_cell.col, 23);
+  for (int c = 24; c <= 29; ++c) EXPECT_EQ(res.labels.at(c, 4), 0) << c;
+  EXPECT_EQ(res.objects[1].cells, 16);  // the whole table top
+  // Without the stray returns the same pocket goes as well (the existing pocket rule).
+  auto clean = g;
+  clean.counts[(4 * clean.ny + 4) * clean.nx + 26] = 0;
+  clean.counts[(4 * clean.ny + 5) * clean.nx + 26] = 0;
+  EXPECT_EQ(extract_objects(L, geo, clean, flat_layers(), p, scanner).objects[0].cells, 16);
+}
+
+TEST(Objects, ThinStripsAlongAWallAreItsFaceNotObjects) {
+  // Walls on the border of a 40 x 30 room. Along the south wall a strip two cells (0.1 m) deep
+  // and 16 long: the wall's face seen in the furniture band (a grazing view). A shelf 7 cells
+  // (0.35 m) deep along the north wall and a bin of 5 x 5 cells in the south-east corner stay.
+  const int w = 40, h = 30;
+  Grid<Cell> L(w, h, Cell::kFree);
+  for (int c = 0; c < w; ++c) L.at(c, 0) = L.at(c, h - 1) = Cell::kWall;
+  for (int r = 0; r < h; ++r) L.at(0, r) = L.at(w - 1, r) = Cell::kWall;
+  auto g = voxels(w, h, 50);
+  auto put = [&](int c0, int c1, int r0, int r1, double top) {
+    for (int r = r0; r <= r1; ++r)
+      for (int c = c0; c <= c1; ++c) {
+        L.at(c, r) = Cell::kFurniture;
+        fill_column(g, c, r, 0.0, top);
+      }
+  };
+  put(8, 23, 1, 2, 1.8);    // the face strip
+  put(8, 23, 22, 28, 1.8);  // the shelf
+  put(34, 38, 1, 5, 0.4);   // the bin in the corner
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  ObjectParams p;
+  p.min_area_m2 = 0.0;
+  p.min_seen_area_m2 = 0.0;
+  const auto res = extract_objects(L, geo, g, flat_layers(), p);
+  ASSERT_EQ(res.objects.size(), 2u);
+  EXPECT_EQ(res.objects[0].cells, 25);  // the bin (row 1 first)
+  EXPECT_EQ(res.objects[1].cells, 7 * 16);
+  EXPECT_EQ(res.labels.at(10, 1), 0);
+  EXPECT_EQ(res.wall_cells.at(10, 1), 1);  // wall to the rooms of a floor
+  EXPECT_EQ(res.wall_cells.at(10, 25), 0);
+  EXPECT_EQ(res.left_over_cells, 32);  // the strip, counted as left over
+  EXPECT_EQ(res.left_over_pieces, 1);
+  EXPECT_NEAR(res.left_over_area_m2, 32 * 0.0025, 1e-12);
+}
