@@ -13,7 +13,7 @@
 # Each row is followed by the rooms of that storey (map-eval's "rooms" block; issue 16): truth
 # rooms (corridor included), found / missed / split / merged, rooms within 0.15 m Hausdorff and
 # 3 % area, doors found, objects (>= 0.1 m2) recall / precision and objects in no truth room.
-# docs/evaluation.md ("Floors", "Rooms of a floor") holds the figures. Simulations are kept in OUT and reused by a
+# docs/evaluation.md (scripts/eval_report.sh) holds the figures. Simulations are kept in OUT and reused by a
 # later run (delete OUT after changing STEP_DEG or scene-sim).
 #
 # Usage: scripts/floor_eval.sh [BUILD_DIR]   (default build/)

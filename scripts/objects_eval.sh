@@ -4,7 +4,7 @@
 # its defaults (recall: truth items of at least 0.1 m2; precision: every object written, floor
 # items only). Prints one row per seed and the totals: recall, precision, median |z_max error|,
 # objects below objects.min_area_m2 written (must be 0), furniture cells left over.
-# docs/evaluation.md and docs/furniture-extract.md hold the figures. Seeds 1-20 tune, 21-40 are
+# docs/evaluation.md (scripts/eval_report.sh) holds the figures. Seeds 1-20 tune, 21-40 are
 # reported once and never tuned on. Simulations are kept in OUT/sim_N and reused.
 #
 # Usage: scripts/objects_eval.sh [BUILD_DIR] [FIRST_SEED] [LAST_SEED]   (default build 1 20)

@@ -8,15 +8,17 @@
 # 0.15 m Hausdorff and 3 % area, free-space IoU over the seen cells and over all truth-free
 # cells (map.pgm, and the layout M_r), and the far free area: result free cells farther than
 # 0.5 m from every seen cell (map-eval's floor.*.far_free; in m2 and as a share of the free
-# area). docs/evaluation.md ("Sparse scans") holds the figures. Seeds 1-20 tune, 21-40 are
-# checked once. Simulations are kept in OUT/<case>/sim_N and reused.
+# area). The case "default" is scene-sim's own step (0.25 degrees). docs/evaluation.md holds the
+# figures (scripts/eval_report.sh). Seeds 1-20 tune, 21-40 are checked once. Simulations are
+# kept in OUT/<case>/sim_N and reused.
 #
 # Usage: scripts/sparse_eval.sh [BUILD_DIR] [FIRST_SEED] [LAST_SEED]   (default build 1 20)
-# Environment: CASES ("0.5 1 2 16beam"; a number is a --step-deg), OUT (/tmp/sparse_eval),
+# Environment: CASES ("0.5 1 2 16beam"; a number is a --step-deg, "default" scene-sim's own
+# step), OUT (/tmp/sparse_eval),
 # ROWS (1: print every seed), PCD_ARGS (extra pcd-to-map and furniture-extract options).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-case "${1:-}" in -h | --help) sed -n '2,17p' "$0"; exit 0 ;; esac
+case "${1:-}" in -h | --help) sed -n '2,19p' "$0"; exit 0 ;; esac
 build="${1:-build}"
 first="${2:-1}"
 last="${3:-20}"
@@ -27,6 +29,7 @@ for c in ${CASES:-0.5 1 2 16beam}; do
   mkdir -p "$dir"
   simargs=(--step-deg "$c")
   [ "$c" = 16beam ] && simargs=(-c config/scene-sim-16beam.yaml)
+  [ "$c" = default ] && simargs=()
   for s in $(seq "$first" "$last"); do
     sim="$dir/sim_$s"
     [ -f "$sim/ground_truth.json" ] ||

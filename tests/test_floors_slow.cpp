@@ -154,7 +154,7 @@ TEST(FloorsApp, FourRoomsFrom3dtkAndFromTheMergedCloud) {
 // The mobile-scanner mode (a position every 0.5 m, 16 beams): with its trajectory every door
 // open, every position reachable, seen-free IoU >= 0.9 (map-eval's figures); the same without
 // any position (cloud.pcd's VIEWPOINT, the first position, is dropped): the observed floor and
-// its holes alone (docs/evaluation.md "Floors").
+// its holes alone (docs/evaluation-history.md "Floors").
 TEST(FloorsApp, FourRoomsMobileWithAndWithoutTrajectory) {
   const fs::path dir = test::scratch_dir();
   const auto sim =
@@ -272,7 +272,7 @@ struct Building {
   int rooms, storeys, seed;
   /// Rooms within 0.15 m Hausdorff and 3 % area (map-eval's rooms block, summed over the
   /// storeys) per mode, a regression guard one below what the polygons fitted to the wall faces
-  /// measured (2026-12-06; docs/evaluation.md, "Rooms of a floor"); issue 16 wants 90 %.
+  /// measured (2026-12-06; docs/evaluation-history.md, "Rooms of a floor"); issue 16 wants 90 %.
   std::array<int, 4> min_rooms_within;
 };
 

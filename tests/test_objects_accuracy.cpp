@@ -198,13 +198,13 @@ TEST(ObjectsAccuracy, TwentySimulatedScenes) {
   EXPECT_GE(t.recall, 0.9);
   EXPECT_GE(t.precision, 0.9);
   EXPECT_LE(t.median_height_error_m, 0.05);
-  // Lamps (no target in the issue; docs/evaluation.md): guards against regressions.
+  // Lamps (no target in the issue; docs/evaluation-history.md): guards against regressions.
   EXPECT_GE(t.lamp_recall, 0.75);
   EXPECT_GE(t.lamp_precision, 0.6);
 }
 
 // The parameters were chosen looking at scenes 1-20; scenes 21-40 were not looked at while doing
-// so and show what to expect on new scenes (docs/evaluation.md).
+// so and show what to expect on new scenes (docs/evaluation-history.md).
 TEST(ObjectsAccuracy, TwentyHeldOutScenes) {
   const Totals t = score_scenes(21, 40);
   EXPECT_GE(t.recall, 0.88);    // 2026-12-02: 0.889 (64 of 72)

@@ -2,7 +2,7 @@
 // default scanner, tilt and corridor), `furniture-extract` with its defaults, `map-eval` with its
 // defaults (recall over truth items of at least 0.1 m2, precision over every object written), as
 // scripts/objects_eval.sh runs them. App-level, over 1 s: labelled slow. Figures in
-// docs/evaluation.md ("Figures as a user gets them").
+// docs/evaluation-history.md ("Figures as a user gets them").
 #include <gtest/gtest.h>
 #include <unistd.h>
 

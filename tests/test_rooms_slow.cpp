@@ -87,8 +87,8 @@ TEST(RoomsApp, FourRoomsAndACorridorEachItsOwnRoomWithItsDoor) {
 // levelling trusts the floor over a ceiling of rooms at several heights (2026-12-06: this
 // building was levelled 0.3 degrees off before), on 15 objects: recall 0.82 (a shelf's footprint
 // grew by three cells past the match), precision 0.67, 2 outside; off 3 outside (the 8- and 12-
-// room buildings gained, docs/evaluation.md "Rooms of a floor"). Issue 16's target (precision
-// 0.9) is not reached: docs/evaluation.md "Rooms of a floor" says what is left.
+// room buildings gained, docs/evaluation-history.md "Rooms of a floor"). Issue 16's target (precision
+// 0.9) is not reached: docs/evaluation-history.md "Rooms of a floor" says what is left.
 TEST(RoomsApp, InnerWallsAreNotFurniture) {
   const fs::path in = rooms_building(141, 1);
   const fs::path out = indoormap::test::scratch_dir();
@@ -145,7 +145,7 @@ TEST(RoomsApp, TwoStoreysEachWithItsRooms) {
 
 // The office (one room, 51 m2, scanned from inside): the office is one room of rooms.geojson
 // (IoU >= 0.85 with the truth); a separate 3.4 m2 piece of free space with no door to it comes
-// out as a second room (counted "split" by map-eval; docs/evaluation.md says so).
+// out as a second room (counted "split" by map-eval; docs/evaluation-history.md says so).
 TEST(RoomsApp, SingleRoomOfficeIsOneRoomPlusAPiece) {
   const fs::path office = fs::path(INDOORMAP_SOURCE_DIR) / "clouds" / "office";
   const fs::path out = indoormap::test::scratch_dir();

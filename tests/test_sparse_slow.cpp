@@ -2,7 +2,7 @@
 // never looked at while tuning), at a 2 degree step and with the 16-beam lidar of
 // config/scene-sim-16beam.yaml, run through pcd-to-map with its defaults and scored by map-eval
 // with its defaults (objects: pcd-to-map's objects.json, the same objects furniture-extract
-// writes). docs/evaluation.md, "Sparse scans", has the figures; scripts/sparse_eval.sh prints them.
+// writes). docs/evaluation-history.md, "Sparse scans", has the figures; scripts/sparse_eval.sh prints them.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -48,7 +48,7 @@ bool border_within(const json& e) {
 }
 
 // Objects at 1 degree: issue 17's target, 0.8 (met since 2026-12-06: recall 58 of 72, 0.806,
-// precision 68 of 83 written, 0.819; docs/evaluation.md, "Sparse scans"). The 16-beam far share:
+// precision 68 of 83 written, 0.819; docs/evaluation-history.md, "Sparse scans"). The 16-beam far share:
 // a regression guard (the figure of 2026-12-02 rounded up; that target is not met).
 constexpr double kRecallFloor = 0.8, kPrecisionFloor = 0.8, kSixteenBeamFarCeil = 0.35;
 
@@ -83,7 +83,7 @@ TEST(Sparse, OneDegreeStepOnTwentyHeldOutScenes) {
   // Issue 17: at least 0.8 x 20 rooms within 0.15 m and 3 %; free IoU over seen cells >= 0.8.
   EXPECT_GE(border, 16);
   EXPECT_GE(seen_iou / 20, 0.8);
-  // Objects: issue 17's 0.8 over everything written (docs/evaluation.md, "Sparse scans").
+  // Objects: issue 17's 0.8 over everything written (docs/evaluation-history.md, "Sparse scans").
   const double recall = static_cast<double>(matched) / truth;
   const double precision = static_cast<double>(matched_all) / written;
   EXPECT_GE(recall, kRecallFloor) << matched << " of " << truth;
@@ -105,7 +105,7 @@ TEST(Sparse, TwoDegreeStepHasNoFreeCellsFarFromTheRays) {
 // The 16-beam lidar (config/scene-sim-16beam.yaml), seeds 21-25: every scene gives a map. Free
 // far from the rays: NOT met. Around the scanner, within about 1.3 m, no ray comes down into
 // the truth's seen band (below 1 m: the lowest beam is 15 degrees down), but the 2D rays of the
-// navigation map call those cells free (docs/evaluation.md, "Sparse scans"). The bound is a
+// navigation map call those cells free (docs/evaluation-history.md, "Sparse scans"). The bound is a
 // guard against regressions only (seeds 1-20: 9 % of the free area; 21-25: up to 33 % per scene).
 TEST(Sparse, SixteenBeamLidarGivesAMapWithFreeSpaceNearTheRays) {
   const fs::path dir = indoormap::test::scratch_dir();
@@ -117,7 +117,7 @@ TEST(Sparse, SixteenBeamLidarGivesAMapWithFreeSpaceNearTheRays) {
     EXPECT_LE(far_share(e, "map"), kSixteenBeamFarCeil) << "seed " << seed;
     EXPECT_LE(far_share(e, "layout"), kSixteenBeamFarCeil) << "seed " << seed;
     // No return lies on the floor: no plane through the walls levels the cloud, and the run
-    // says the floor is unseen (docs/evaluation.md, "16-beam lidar: planes through walls").
+    // says the floor is unseen (docs/evaluation-history.md, "16-beam lidar: planes through walls").
     const json s = json::parse(
         indoormap::test::read_text(dir / ("res_" + std::to_string(seed)) / "summary.json"));
     EXPECT_FALSE(s["levelling"]["levelled"].get<bool>()) << "seed " << seed;
