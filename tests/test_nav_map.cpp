@@ -202,6 +202,29 @@ TEST(NavMap, RaysPassBeneathATableTopNotACabinet) {
   EXPECT_EQ(at(off, 25, 10), Cell::kUnknown);
 }
 
+// A table top seen by a mobile lidar's beams: three arcs of two points each at 0.75 m (x 10, 14
+// and 18, y 5-12: 0.4 m apart), the floor seen everywhere, under the top too. Each arc alone is
+// a line of specks; joined across their gaps they are the top: occupied from the first arc to
+// the last, not beyond. Three points at that height elsewhere (fewer than a surface needs) and
+// a doorway's veil (one point per column, neighbours at other heights) stay free.
+TEST(NavMap, ArcsAcrossASparseTableTopAreOneTop) {
+  auto g = room_with_seen_floor(0.1, 40, 20);
+  for (const int x : {10, 14, 18})
+    for (int y = 5; y <= 12; ++y) put(g, x, y, 7, 2);
+  put(g, 30, 15, 7, 1);
+  put(g, 31, 15, 7, 1);
+  put(g, 30, 16, 7, 1);
+  for (int y = 1; y <= 6; ++y)  // the veil: nine points at each of four heights
+    for (int x = 30; x <= 35; ++x) put(g, x, y, 3 + 2 * ((x + 2 * y) % 4), 1);
+  const NavResult r = build_nav_map(g, 0.05, {}, NavParams{});
+  for (const int x : {11, 12, 13, 15, 16, 17})
+    EXPECT_EQ(at(r, x, 8), Cell::kWall) << "between the arcs, x " << x;
+  EXPECT_EQ(at(r, 22, 8), Cell::kFree) << "beyond the last arc";
+  EXPECT_EQ(at(r, 14, 15), Cell::kFree) << "beside the top";
+  EXPECT_EQ(at(r, 30, 15), Cell::kFree) << "three points are no top";
+  EXPECT_EQ(at(r, 32, 3), Cell::kFree) << "the veil";
+}
+
 // Floor holes: a walled room (walls at x 0 and 39, y 0 and 19) with its floor seen but for a
 // ring gap (x 8-10, wall to wall across the room: two thirds of its border is free floor), a
 // scanner's blind disc (radius 3 cells round (30, 10)), a cabinet (occupied sides round an

@@ -10,6 +10,7 @@
 #include "floor_holes.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/core/parallel.hpp"
+#include "level_tops.hpp"
 #include "rays.hpp"
 
 namespace indoormap::layout {
@@ -238,12 +239,12 @@ std::vector<std::uint8_t> veil_columns(const Columns& col, const std::vector<std
 // doorway, points at random heights over a floor seen through them.
 Grid<std::uint8_t> occupied_columns(const Columns& col, const std::vector<std::uint8_t>& floor,
                                     int w, int h, const NavParams& p, std::int32_t min_span,
-                                    std::int64_t& specks) {
+                                    std::int64_t& specks, std::vector<std::uint8_t>& veil) {
   Grid<std::uint8_t> occupied(w, h, 0);
   const std::function<bool(std::size_t)> seen = [&](std::size_t i) {
     return !floor.empty() && floor[i];
   };
-  const auto veil = veil_columns(col, scatter_columns(col, seen, w, h, min_span, p), w, h);
+  veil = veil_columns(col, scatter_columns(col, seen, w, h, min_span, p), w, h);
   // A veil column is no obstacle, nor a surface's neighbour (a speck among veil columns at its
   // own height is part of the veil, not of a table top).
   for (int row = 0; row < h; ++row)
@@ -278,6 +279,12 @@ constexpr double kRaisedMaxSpanM = 0.15;
 // without a body-band point that lies between two raised cells at a shared level, at most
 // kTopGapCells empty cells apart along a row, a column or a diagonal, is part of the top.
 constexpr int kTopGapCells = 3;
+
+// Sparse tops (detail::fill_level_tops): a table top crossed by a mobile lidar's arcs 0.2-0.5 m
+// apart is joined across its gaps; a piece needs this many samples (0.02 m2 at 5 cm cells) to
+// be a surface, not a stray point.
+constexpr double kLevelTopGapM = 0.25;
+constexpr int kLevelTopMinCells = 8;
 
 void close_top_gaps(const Columns& col, int w, int h, Grid<std::uint8_t>& occupied,
                     std::vector<std::uint8_t>& raised) {
@@ -356,8 +363,9 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
     cv::morphologyEx(m, m, cv::MORPH_CLOSE, square, {-1, -1}, p.floor_closing_cells);
   }
   const std::vector<std::uint8_t> no_floor;  // the exact ghost filter cleared the veils
+  std::vector<std::uint8_t> veil;
   Grid<std::uint8_t> occupied = occupied_columns(col, veils_cleared ? no_floor : floor_seen, w, h,
-                                                 p, min_span, r.specks_dropped);
+                                                 p, min_span, r.specks_dropped, veil);
   // Raised obstacles, over a floor seen in their own cell: the rays pass beneath them. Only thin
   // ones (a top, a seat: points within kRaisedMaxSpanM): a wall's face seen above something
   // standing in front of it is no top, and a ray through it would mark the wall's inside seen.
@@ -368,6 +376,13 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
     raised[i] = occupied.data[i] && col.floor_seen[i] && col.lo[i] >= raised_lo &&
                 col.hi[i] - col.lo[i] < span;
   close_top_gaps(col, w, h, occupied, raised);
+  std::vector<std::uint8_t> under_top = col.floor_seen;  // a veil's points are no top's samples
+  for (std::size_t i = 0; i < under_top.size(); ++i) under_top[i] &= !veil[i];
+  detail::fill_level_tops(
+      col.lo, col.hi, under_top, w, h,
+      {static_cast<std::int32_t>(raised_lo), span,
+       static_cast<int>(std::lround(g.to_cells(kLevelTopGapM))), kLevelTopMinCells},
+      occupied.data, raised);
   for (std::size_t i = 0; i < floor_seen.size(); ++i) floor_seen[i] &= !occupied.data[i];
   std::vector<std::uint8_t> crossed(occupied.size(), 0), shadow(occupied.size(), 0);
   const detail::ShadowLimits shadow_limits{
