@@ -236,7 +236,7 @@ std::vector<std::uint8_t> veil_columns(const Columns& col, const std::vector<std
 // is level across its cells. And a scatter column (seen floor around, no min_span consecutive
 // layers) with two scatter neighbours at other heights, or two such veil columns within two
 // cells, is no obstacle at all, nor a surface's neighbour: the veil of mixed pixels in a
-// doorway, points at random heights over a floor seen through them.
+// doorway, points at random heights over a floor seen through them. veil: those veil columns.
 Grid<std::uint8_t> occupied_columns(const Columns& col, const std::vector<std::uint8_t>& floor,
                                     int w, int h, const NavParams& p, std::int32_t min_span,
                                     std::int64_t& specks, std::vector<std::uint8_t>& veil) {
