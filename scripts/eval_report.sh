@@ -7,8 +7,8 @@
 #   test_two_positions_slow the default office from ten pairs of scanner positions
 #   jacobs_eval.sh          the shared Jacobs scan, whole and in sectors
 #   floor_eval.sh           the buildings of 4, 8 and 12 rooms, every mode, tuning and held out
-# Simulations are kept under OUT and reused by a later run: about 20 minutes on 2 cores with
-# them cached, 40 without.
+# Simulations are kept under OUT and reused by a later run: about 6 minutes on 2 cores with
+# them cached (a first run simulates every scene once, which takes longer).
 #
 # Usage: scripts/eval_report.sh [BUILD_DIR]   (default build/; built with the tests)
 # Environment: OUT (/tmp/eval_report), MD (docs/evaluation.md), OFFSETS ("0 1200": the
