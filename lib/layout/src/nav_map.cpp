@@ -315,6 +315,33 @@ void close_top_gaps(const Columns& col, int w, int h, Grid<std::uint8_t>& occupi
   for (const std::size_t i : fill) occupied.data[i] = raised[i] = 1;
 }
 
+// Raised obstacles, over a floor seen in their own cell: the rays pass beneath them. Only thin
+// ones (a top, a seat: points within kRaisedMaxSpanM): a wall's face seen above something
+// standing in front of it is no top, and a ray through it would mark the wall's inside seen.
+// The gaps of a sampled top are closed, and a sparse top's samples joined (both occupied and
+// raised in `occupied`).
+std::vector<std::uint8_t> raised_obstacles(const Columns& col, const cloud::VoxelGrid& g,
+                                           double floor_z_m, const NavParams& p,
+                                           const std::vector<std::uint8_t>& veil,
+                                           Grid<std::uint8_t>& occupied) {
+  const int w = occupied.width, h = occupied.height;
+  std::vector<std::uint8_t> raised(occupied.size(), 0);
+  const std::int64_t raised_lo = g.layer_of(floor_z_m + p.ray_under_min_m);
+  const auto span = static_cast<std::int32_t>(std::lround(g.to_cells(kRaisedMaxSpanM)));
+  for (std::size_t i = 0; i < raised.size(); ++i)
+    raised[i] = occupied.data[i] && col.floor_seen[i] && col.lo[i] >= raised_lo &&
+                col.hi[i] - col.lo[i] < span;
+  close_top_gaps(col, w, h, occupied, raised);
+  std::vector<std::uint8_t> under_top = col.floor_seen;  // a veil's points are no top's samples
+  for (std::size_t i = 0; i < under_top.size(); ++i) under_top[i] &= !veil[i];
+  detail::fill_level_tops(
+      col.lo, col.hi, under_top, w, h,
+      {static_cast<std::int32_t>(raised_lo), span,
+       static_cast<int>(std::lround(g.to_cells(kLevelTopGapM))), kLevelTopMinCells},
+      occupied.data, raised);
+  return raised;
+}
+
 // Columns holding a point more than kDropM below the floor: a hole in the floor (a stairwell, a
 // shaft) shows what lies below it; such a gap in the floor's returns is no floor hole to fill.
 constexpr double kDropM = 0.3;
@@ -366,23 +393,7 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
   std::vector<std::uint8_t> veil;
   Grid<std::uint8_t> occupied = occupied_columns(col, veils_cleared ? no_floor : floor_seen, w, h,
                                                  p, min_span, r.specks_dropped, veil);
-  // Raised obstacles, over a floor seen in their own cell: the rays pass beneath them. Only thin
-  // ones (a top, a seat: points within kRaisedMaxSpanM): a wall's face seen above something
-  // standing in front of it is no top, and a ray through it would mark the wall's inside seen.
-  std::vector<std::uint8_t> raised(occupied.size(), 0);
-  const std::int64_t raised_lo = g.layer_of(floor_z_m + p.ray_under_min_m);
-  const auto span = static_cast<std::int32_t>(std::lround(g.to_cells(kRaisedMaxSpanM)));
-  for (std::size_t i = 0; i < raised.size(); ++i)
-    raised[i] = occupied.data[i] && col.floor_seen[i] && col.lo[i] >= raised_lo &&
-                col.hi[i] - col.lo[i] < span;
-  close_top_gaps(col, w, h, occupied, raised);
-  std::vector<std::uint8_t> under_top = col.floor_seen;  // a veil's points are no top's samples
-  for (std::size_t i = 0; i < under_top.size(); ++i) under_top[i] &= !veil[i];
-  detail::fill_level_tops(
-      col.lo, col.hi, under_top, w, h,
-      {static_cast<std::int32_t>(raised_lo), span,
-       static_cast<int>(std::lround(g.to_cells(kLevelTopGapM))), kLevelTopMinCells},
-      occupied.data, raised);
+  const std::vector<std::uint8_t> raised = raised_obstacles(col, g, floor_z_m, p, veil, occupied);
   for (std::size_t i = 0; i < floor_seen.size(); ++i) floor_seen[i] &= !occupied.data[i];
   std::vector<std::uint8_t> crossed(occupied.size(), 0), shadow(occupied.size(), 0);
   const detail::ShadowLimits shadow_limits{
