@@ -14,11 +14,11 @@
 #
 # Usage: scripts/sparse_eval.sh [BUILD_DIR] [FIRST_SEED] [LAST_SEED]   (default build 1 20)
 # Environment: CASES ("0.5 1 2 16beam"; a number is a --step-deg, "default" scene-sim's own
-# step), OUT (/tmp/sparse_eval),
-# ROWS (1: print every seed), PCD_ARGS (extra pcd-to-map and furniture-extract options).
+# step), OUT (/tmp/sparse_eval), ROWS (1: print every seed), PCD_ARGS (extra pcd-to-map and
+# furniture-extract options).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-case "${1:-}" in -h | --help) sed -n '2,19p' "$0"; exit 0 ;; esac
+case "${1:-}" in -h | --help) sed -n '2,18p' "$0"; exit 0 ;; esac
 build="${1:-build}"
 first="${2:-1}"
 last="${3:-20}"
