@@ -87,8 +87,8 @@ TEST(RoomsApp, FourRoomsAndACorridorEachItsOwnRoomWithItsDoor) {
 // levelling trusts the floor over a ceiling of rooms at several heights (2026-12-06: this
 // building was levelled 0.3 degrees off before), on 15 objects: recall 0.82 (a shelf's footprint
 // grew by three cells past the match), precision 0.67, 2 outside; off 3 outside (the 8- and 12-
-// room buildings gained, docs/evaluation-history.md "Rooms of a floor"). Issue 16's target (precision
-// 0.9) is not reached: docs/evaluation-history.md "Rooms of a floor" says what is left.
+// room buildings gained, docs/evaluation-history.md "Rooms of a floor"). Issue 16's target
+// (precision 0.9) is not reached: docs/evaluation-history.md "Rooms of a floor" says what is left.
 TEST(RoomsApp, InnerWallsAreNotFurniture) {
   const fs::path in = rooms_building(141, 1);
   const fs::path out = indoormap::test::scratch_dir();

@@ -2,7 +2,8 @@
 // never looked at while tuning), at a 2 degree step and with the 16-beam lidar of
 // config/scene-sim-16beam.yaml, run through pcd-to-map with its defaults and scored by map-eval
 // with its defaults (objects: pcd-to-map's objects.json, the same objects furniture-extract
-// writes). docs/evaluation-history.md, "Sparse scans", has the figures; scripts/sparse_eval.sh prints them.
+// writes). docs/evaluation-history.md, "Sparse scans", has the figures; scripts/sparse_eval.sh
+// prints them.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -48,8 +49,8 @@ bool border_within(const json& e) {
 }
 
 // Objects at 1 degree: issue 17's target, 0.8 (met since 2026-12-06: recall 58 of 72, 0.806,
-// precision 68 of 83 written, 0.819; docs/evaluation-history.md, "Sparse scans"). The 16-beam far share:
-// a regression guard (the figure of 2026-12-02 rounded up; that target is not met).
+// precision 68 of 83 written, 0.819; docs/evaluation-history.md, "Sparse scans"). The 16-beam far
+// share: a regression guard (the figure of 2026-12-02 rounded up; that target is not met).
 constexpr double kRecallFloor = 0.8, kPrecisionFloor = 0.8, kSixteenBeamFarCeil = 0.35;
 
 double far_share(const json& e, const char* grid) {
