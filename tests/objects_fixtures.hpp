@@ -35,6 +35,14 @@ inline cloud::VoxelGrid voxels(int w, int h, int nz) {
   g.counts.assign(static_cast<std::size_t>(w) * h * nz, 0);
   return g;
 }
+// A layout of w x h free cells with walls on its border.
+inline Grid<Cell> walled_room(int w, int h) {
+  Grid<Cell> L(w, h, Cell::kFree);
+  for (int c = 0; c < w; ++c) L.at(c, 0) = L.at(c, h - 1) = Cell::kWall;
+  for (int r = 0; r < h; ++r) L.at(0, r) = L.at(w - 1, r) = Cell::kWall;
+  return L;
+}
+
 inline void fill_column(cloud::VoxelGrid& g, int c, int r, double z0, double z1,
                         std::uint16_t n = 2) {
   for (std::int64_t z = static_cast<std::int64_t>(z0 / g.cell_m);

@@ -65,9 +65,7 @@ TEST(Objects, GeometryHeightsAndWallContactOnAHandMadeRoom) {
   // 0.2 m deep: a thinner piece along a wall is the wall's face), a table 4x3 in the middle (top
   // 0.75 m, legs only at its corners) with a lamp 1.6 m above.
   const int w = 24, h = 16;
-  Grid<Cell> L(w, h, Cell::kFree);
-  for (int c = 0; c < w; ++c) L.at(c, 0) = L.at(c, h - 1) = Cell::kWall;
-  for (int r = 0; r < h; ++r) L.at(0, r) = L.at(w - 1, r) = Cell::kWall;
+  Grid<Cell> L = walled_room(w, h);
   auto g = voxels(w, h, 60);
   for (int r = 7; r <= 8; ++r)
     for (int c = 1; c <= 4; ++c) {

@@ -126,9 +126,7 @@ TEST(Objects, ThinStripsAlongAWallAreItsFaceNotObjects) {
   // and 16 long: the wall's face seen in the furniture band (a grazing view). A shelf 7 cells
   // (0.35 m) deep along the north wall and a bin of 5 x 5 cells in the south-east corner stay.
   const int w = 40, h = 30;
-  Grid<Cell> L(w, h, Cell::kFree);
-  for (int c = 0; c < w; ++c) L.at(c, 0) = L.at(c, h - 1) = Cell::kWall;
-  for (int r = 0; r < h; ++r) L.at(0, r) = L.at(w - 1, r) = Cell::kWall;
+  Grid<Cell> L = walled_room(w, h);
   auto g = voxels(w, h, 50);
   auto put = [&](int c0, int c1, int r0, int r1, double top) {
     for (int r = r0; r <= r1; ++r)
