@@ -1,6 +1,7 @@
 // Room layout M_r on small hand-drawn grids: passage area, flood fill, furniture, closing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <opencv2/imgproc.hpp>
 #include <random>
 #include <string>
@@ -29,6 +30,16 @@ std::string render(const Grid<Cell>& g) {
   std::string s;
   for (int r = g.height - 1; r >= 0; --r) {
     for (int c = 0; c < g.width; ++c) s += " WF."[static_cast<int>(g.at(c, r))];
+    s += '\n';
+  }
+  return s;
+}
+
+// A 0/1 grid as parse() reads it: '#' = 1, '.' = 0, top row first.
+std::string render01(const Grid<std::uint8_t>& g) {
+  std::string s;
+  for (int r = g.height - 1; r >= 0; --r) {
+    for (int c = 0; c < g.width; ++c) s += g.at(c, r) ? '#' : '.';
     s += '\n';
   }
   return s;
@@ -161,6 +172,52 @@ TEST(Layout, InsideOfAWallBetweenRoomsIsWallAPillarsIsLeft) {
   const LayoutResult o = build_layout(walls, furn, geo, scanners, off);
   for (int row = 1; row <= 12; ++row)
     for (int col = 12; col <= 13; ++col) EXPECT_EQ(o.layout.at(col, row), Cell::kUnknown);
+}
+
+// A slab seen from both sides, its wall band on one face only: 'F' furniture band, 'W' wall
+// band, '.' seen free, ' ' unseen; 0.1 m cells, walls at most 0.5 m thick. Only the first block
+// is a wall: a face in each band, 0.4 m from seen floor to seen floor. The second is a wall with
+// both faces in M_w and a cabinet against it (two wall faces in the run), the third a shelf 0.4 m
+// deep against a wall seen from the far side (0.7 m), the fourth a table (no wall face).
+TEST(WallSlabs, OneFaceInEachBandIsAWall) {
+  // Rows of unseen cells keep the blocks apart (no line ends on seen floor between them).
+  const std::vector<std::string> rows = {"..F  W.....", "..F  W.....", "..F  W.....", "           ",
+                                         "..W  WF....", "..W  WF....", "..W  WF....", "           ",
+                                         "..FFFF  W..", "..FFFF  W..", "..FFFF  W..", "           ",
+                                         "..FFF......", "..FFF......", "..FFF......"};
+  const auto walls = parse(rows, 'W'), furn = parse(rows, 'F'), seen = parse(rows, '.');
+  const auto slabs = wall_slabs(walls, furn, seen, 0.1, 0.5);
+  std::vector<std::string> expected(rows.size(), "...........");
+  for (int r = 0; r <= 2; ++r) expected[r] = "..####.....";
+  EXPECT_EQ(render01(slabs), render01(parse(expected)));
+  // 0.3 m: the first block's run (0.4 m) is too long.
+  const auto thin = wall_slabs(walls, furn, seen, 0.1, 0.3);
+  EXPECT_EQ(render01(thin), render01(parse(std::vector<std::string>(rows.size(), "..........."))));
+}
+
+// Two rooms, 0.1 m cells, and a wall 0.3 m thick between them whose left face only the
+// furniture band holds (a mobile scanner's beams end below the wall band there): with the seen
+// map it is wall in M_r from face to face, not a furniture strip along the left room.
+TEST(Layout, AWallWithOneFaceInTheFurnitureBandIsWall) {
+  std::vector<std::string> rows(14, "#..........F W..........#");
+  rows.front() = rows.back() = std::string(25, '#');
+  const auto walls = parse(rows, '#'), furn = parse(rows, 'F');
+  auto wall_face = parse(rows, 'W');
+  Grid<std::uint8_t> all_walls = walls;
+  for (std::size_t i = 0; i < all_walls.size(); ++i) all_walls.data[i] |= wall_face.data[i];
+  const auto seen = parse(rows, '.');
+  const GridGeometry geo({0.0, 0.0}, 0.1, all_walls.width, all_walls.height);
+  const std::vector<Eigen::Vector2d> scanners{{0.55, 0.65}, {1.95, 0.65}};
+  const LayoutResult r = build_layout(all_walls, furn, geo, scanners, {}, nullptr, nullptr, &seen);
+  for (int row = 1; row <= 12; ++row)
+    for (int col = 11; col <= 13; ++col)
+      EXPECT_EQ(r.layout.at(col, row), Cell::kWall) << col << "," << row;
+  EXPECT_EQ(r.layout.at(5, 6), Cell::kFree);
+  EXPECT_EQ(r.layout.at(18, 6), Cell::kFree);
+  LayoutParams off;
+  off.wall_max_thickness_m = 0.0;
+  const LayoutResult o = build_layout(all_walls, furn, geo, scanners, off, nullptr, nullptr, &seen);
+  EXPECT_EQ(o.layout.at(11, 6), Cell::kFurniture);
 }
 
 TEST(Layout, ClosingJoinsFragmentsAndPocketsBehindObjectsAreFurniture) {

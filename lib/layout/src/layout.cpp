@@ -330,6 +330,28 @@ void classify(const Grid<std::uint8_t>& walls, const Grid<std::uint8_t>& furn,
   }
 }
 
+// Adds to `walls` the cells of `cand` inside the passage area, neither flooded nor seen, whose
+// 8-connected piece spans more than 2 * max_span_m along an axis. A pillar's inside is left as
+// it is: the objects step describes a pillar by its ring of faces; a wall's inside is longer.
+void add_long_pieces(const Grid<std::uint8_t>& cand_in, const Grid<std::uint8_t>& passage,
+                     const Grid<std::uint8_t>& free_mask, const Grid<std::uint8_t>* seen,
+                     double cell_m, double max_span_m, Grid<std::uint8_t>& walls) {
+  Grid<std::uint8_t> cand(walls.width, walls.height, 0);
+  for (std::size_t i = 0; i < cand.size(); ++i)
+    cand.data[i] =
+        cand_in.data[i] && passage.data[i] && !free_mask.data[i] && !(seen && seen->data[i]);
+  cv::Mat lab, st, cen;
+  cv::connectedComponentsWithStats(as_mat(cand), lab, st, cen, 8, CV_32S);
+  const int max_cells = static_cast<int>(std::lround(2.0 * max_span_m / cell_m));
+  for (int row = 0; row < walls.height; ++row)
+    for (int col = 0; col < walls.width; ++col) {
+      const int k = lab.at<int>(row, col);
+      if (k > 0 &&
+          std::max(st.at<int>(k, cv::CC_STAT_WIDTH), st.at<int>(k, cv::CC_STAT_HEIGHT)) > max_cells)
+        walls.at(col, row) = 1;
+    }
+}
+
 }  // namespace
 
 LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::uint8_t>& furniture,
@@ -405,24 +427,17 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
   if (seen && (seen->width != w || seen->height != h))
     throw Error("build_layout: seen map differs in size");
   if (params.wall_max_thickness_m > 0) {
-    const Grid<std::uint8_t> inside = wall_inside(walls, geo.cell_m(), params.wall_max_thickness_m);
-    Grid<std::uint8_t> cand(w, h, 0);
-    for (std::size_t i = 0; i < cand.size(); ++i)
-      cand.data[i] =
-          inside.data[i] && r.passage.data[i] && !free_mask.data[i] && !(seen && seen->data[i]);
-    // A pillar's inside is left as it is: the objects step describes a pillar by its ring of
-    // faces. Its inside spans at most 2 * wall_max_thickness_m along both axes; a wall's is longer.
-    cv::Mat lab, st, cen;
-    cv::connectedComponentsWithStats(as_mat(cand), lab, st, cen, 8, CV_32S);
-    const int max_cells =
-        static_cast<int>(std::lround(2.0 * params.wall_max_thickness_m / geo.cell_m()));
-    for (int row = 0; row < h; ++row)
-      for (int col = 0; col < w; ++col) {
-        const int k = lab.at<int>(row, col);
-        if (k > 0 && std::max(st.at<int>(k, cv::CC_STAT_WIDTH), st.at<int>(k, cv::CC_STAT_HEIGHT)) >
-                         max_cells)
-          walls.at(col, row) = 1;
-      }
+    // The faces of one wall in M_w with its inside unseen; then the walls one of whose faces
+    // only the furniture band holds (computed before the first are added: their runs ask for
+    // one wall face).
+    Grid<std::uint8_t> slabs;
+    if (seen)
+      slabs = wall_slabs(walls, furniture, *seen, geo.cell_m(), params.wall_max_thickness_m);
+    add_long_pieces(wall_inside(walls, geo.cell_m(), params.wall_max_thickness_m), r.passage,
+                    free_mask, seen, geo.cell_m(), params.wall_max_thickness_m, walls);
+    if (seen)
+      add_long_pieces(slabs, r.passage, free_mask, seen, geo.cell_m(), params.wall_max_thickness_m,
+                      walls);
   }
 
   // Furniture: furniture-band obstacles inside the passage area, plus small unreachable pockets

@@ -50,7 +50,9 @@ struct LayoutParams {
   /// objects). Furniture stands in front of a wall, with free floor, not a second wall, on its
   /// other side; a doorway is wider and the flood reaches it; the floor of a room's corner (cut
   /// off by a diagonal) is seen. An inside no longer than twice this along both grid axes is
-  /// left as it is: a pillar's, which the objects step describes by its ring of faces. 0: off.
+  /// left as it is: a pillar's, which the objects step describes by its ring of faces. The same
+  /// thickness bounds a wall one of whose faces only the furniture band holds (wall_slabs: a
+  /// mobile scanner's beams end below the wall band near a room's walls). 0: off.
   double wall_max_thickness_m = 0.5;
   /// Free space needs evidence (issue 17, sparse scans): the flood runs only over cells where
   /// the scan shows free space (build_layout's `evidence`: the navigation map's free cells, whose
@@ -86,6 +88,16 @@ Grid<std::uint8_t> passage_area(const Grid<std::uint8_t>& walls, int min_lines =
 /// Cells between two wall cells at most max_span_m apart (centre to centre) along a row, column
 /// or diagonal, the wall cells excluded (LayoutParams::wall_max_thickness_m). Values: 0 / 1.
 Grid<std::uint8_t> wall_inside(const Grid<std::uint8_t>& walls, double cell_m, double max_span_m);
+
+/// Cells of a wall one of whose faces only the furniture band holds (LayoutParams::
+/// wall_max_thickness_m): along a row, column or diagonal, a run of cells not `seen` (the scan
+/// shows them free) between two seen cells, at most max_span_m long (cells times step), holding
+/// a wall cell and a furniture cell. The scan saw a slab from both sides, the wall band on one
+/// face only (a mobile scanner's beams end below the wall band near a room's walls): a wall.
+/// Furniture against a wall makes the run at least its depth plus the wall's thickness; a pillar
+/// or a table holds no wall cell. Values: 0 / 1.
+Grid<std::uint8_t> wall_slabs(const Grid<std::uint8_t>& walls, const Grid<std::uint8_t>& furniture,
+                              const Grid<std::uint8_t>& seen, double cell_m, double max_span_m);
 
 struct LayoutResult {
   Grid<Cell> layout;                   ///< M_r
