@@ -220,6 +220,28 @@ TEST(Layout, AWallWithOneFaceInTheFurnitureBandIsWall) {
   EXPECT_EQ(o.layout.at(11, 6), Cell::kFurniture);
 }
 
+// Two rooms 2 m x 1.2 m apart behind a closed wall, 0.1 m cells, scanned without positions: the
+// farthest free cell seeds one room, the floor seen in the other seeds it too (a floor mapped
+// without its trajectory). A piece of seen floor under 2 m2 (the right room's, cut down) does not.
+TEST(Layout, WithoutPositionsEveryRoomWithSeenFloorIsFlooded) {
+  std::vector<std::string> rows(14, "#...................#....................#");
+  rows.front() = rows.back() = std::string(42, '#');
+  const auto walls = parse(rows);
+  const Grid<std::uint8_t> furn(walls.width, walls.height, 0);
+  Grid<std::uint8_t> seen(walls.width, walls.height, 0);
+  for (std::size_t i = 0; i < seen.size(); ++i) seen.data[i] = !walls.data[i];
+  const GridGeometry geo({0.0, 0.0}, 0.1, walls.width, walls.height);
+  const LayoutResult r = build_layout(walls, furn, geo, {}, {}, nullptr, nullptr, &seen);
+  EXPECT_TRUE(r.seeds_estimated);
+  EXPECT_EQ(r.layout.at(10, 6), Cell::kFree);
+  EXPECT_EQ(r.layout.at(30, 6), Cell::kFree);
+  // Seen floor in the right room: 19 cells (0.19 m2), under 2 m2.
+  for (int col = 21; col < 41; ++col)
+    for (int row = 1; row < 13; ++row) seen.at(col, row) = row == 6 && col < 40;
+  const LayoutResult s = build_layout(walls, furn, geo, {}, {}, nullptr, nullptr, &seen);
+  EXPECT_EQ(s.layout.at(10, 6) == Cell::kFree, s.layout.at(30, 6) != Cell::kFree);
+}
+
 TEST(Layout, ClosingJoinsFragmentsAndPocketsBehindObjectsAreFurniture) {
   auto walls = parse({
       "###########",

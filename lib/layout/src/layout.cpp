@@ -254,6 +254,27 @@ void place_seeds(Grid<std::uint8_t>& passable, const GridGeometry& geo,
   }
 }
 
+// With no scanner position: a seed in every 4-connected piece of the floodable cells that holds
+// at least kSeenSeedMinAreaM2 of cells the scan shows free (observed floor): the rooms of a
+// floor scanned by a mobile scanner without its trajectory. One seed alone flooded one room.
+constexpr double kSeenSeedMinAreaM2 = 2.0;
+void add_seen_seeds(Grid<std::uint8_t>& floodable, const Grid<std::uint8_t>& seen, double cell_m,
+                    std::vector<CellIndex>& seeds) {
+  cv::Mat lab;
+  const int n = cv::connectedComponents(as_mat(floodable), lab, 4, CV_32S);
+  std::vector<std::int64_t> count(static_cast<std::size_t>(n), 0);
+  std::vector<CellIndex> first(static_cast<std::size_t>(n));
+  for (int row = 0; row < floodable.height; ++row)
+    for (int col = 0; col < floodable.width; ++col) {
+      const int k = lab.at<int>(row, col);
+      if (k > 0 && seen.at(col, row) && count[k]++ == 0) first[k] = {col, row};
+    }
+  const auto min_cells =
+      static_cast<std::int64_t>(std::ceil(kSeenSeedMinAreaM2 / (cell_m * cell_m)));
+  for (int k = 1; k < n; ++k)
+    if (count[k] >= min_cells) seeds.push_back(first[k]);
+}
+
 // Flood fill of free space (4-connected, so diagonal gaps in a wall do not leak).
 Grid<std::uint8_t> flood_free(const Grid<std::uint8_t>& passable,
                               const std::vector<CellIndex>& seeds) {
@@ -422,10 +443,11 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
     for (std::size_t i = 0; i < floodable.size(); ++i) floodable.data[i] &= seen.data[i] != 0;
   }
 
-  place_seeds(floodable, geo, scanners_map, params, r);
-  const Grid<std::uint8_t> free_mask = flood_free(floodable, r.seeds);
   if (seen && (seen->width != w || seen->height != h))
     throw Error("build_layout: seen map differs in size");
+  place_seeds(floodable, geo, scanners_map, params, r);
+  if (r.seeds_estimated && seen) add_seen_seeds(floodable, *seen, geo.cell_m(), r.seeds);
+  const Grid<std::uint8_t> free_mask = flood_free(floodable, r.seeds);
   if (params.wall_max_thickness_m > 0) {
     // The faces of one wall in M_w with its inside unseen; then the walls one of whose faces
     // only the furniture band holds (computed before the first are added: their runs ask for

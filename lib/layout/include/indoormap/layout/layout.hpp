@@ -112,7 +112,9 @@ struct LayoutResult {
 
 /// Builds M_r from M_w (walls) and M_f (furniture), both 0/1 grids of the same size, flooding
 /// free space from the scanners (map-frame x, y). With no scanner, the seed is the free cell
-/// farthest from any obstacle inside the passage area, and the result says so.
+/// farthest from any obstacle inside the passage area, and the result says so; with `seen`, each
+/// other floodable piece holding at least 2 m2 of seen cells gets a seed too (the rooms of a
+/// floor scanned without positions).
 /// support: the obstacle map of the slice hanging_gap_m thick just below the wall band (a wall
 /// or a pillar continues there, a lamp does not); when null, the furniture map stands in for it.
 /// evidence: cells the scan shows free (1; see LayoutParams::free_needs_evidence); when null,
