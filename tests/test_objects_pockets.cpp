@@ -150,3 +150,37 @@ TEST(Objects, ThinStripsAlongAWallAreItsFaceNotObjects) {
   EXPECT_EQ(res.left_over_pieces, 1);
   EXPECT_NEAR(res.left_over_area_m2, 32 * 0.0025, 1e-12);
 }
+
+TEST(Objects, ThinStripsBesideTheUnseenWorldAreFacesNotWalls) {
+  // A 40 x 30 room whose east part was never seen: columns 32-39 are unknown up to the map's
+  // edge (the far end of a corridor, its wall band unseen). Along that edge a strip two cells
+  // deep and 16 long is the end wall's face: it leaves the list (left over) but is no wall for
+  // the rooms step, which finds the room's edge at the unknown. A shelf 7 cells (0.35 m) deep
+  // along the same edge stays, and so does a strip of the same size beside an unknown pocket
+  // inside the room (under a table: it does not reach the map's edge).
+  const int w = 40, h = 30;
+  Grid<Cell> L = walled_room(w, h);
+  for (int r = 0; r < h; ++r)
+    for (int c = 32; c < w; ++c) L.at(c, r) = Cell::kUnknown;
+  for (int r = 10; r <= 20; ++r)
+    for (int c = 10; c <= 14; ++c) L.at(c, r) = Cell::kUnknown;  // the pocket
+  auto g = voxels(w, h, 50);
+  auto put = [&](int c0, int c1, int r0, int r1, double top) {
+    for (int r = r0; r <= r1; ++r)
+      for (int c = c0; c <= c1; ++c) {
+        L.at(c, r) = Cell::kFurniture;
+        fill_column(g, c, r, 0.0, top);
+      }
+  };
+  put(30, 31, 2, 17, 1.8);   // the face strip, beside the unseen world
+  put(25, 31, 20, 27, 1.8);  // the shelf
+  put(15, 16, 5, 20, 1.8);   // a strip beside the pocket
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  const auto res = extract_objects(L, geo, g, flat_layers(), every_size());
+  ASSERT_EQ(res.objects.size(), 2u);
+  EXPECT_EQ(res.labels.at(30, 10), 0);
+  EXPECT_EQ(res.wall_cells.at(30, 10), 0);
+  EXPECT_NE(res.labels.at(15, 10), 0);
+  EXPECT_NE(res.labels.at(28, 25), 0);
+  EXPECT_EQ(res.left_over_cells, 32);
+}

@@ -221,27 +221,54 @@ void measure_objects(const GridGeometry& geo, const cloud::VoxelGrid& voxels, Ob
 // (a shelf, 0.3 m deep) reaches beyond that zone (0.15 m). A compact piece (a bin in a corner)
 // stays. Such pieces leave the list, count as left over and are marked in wall_cells.
 void drop_wall_faces(const Grid<Cell>& layout, ObjectsResult& res) {
-  constexpr double kMinFaceShare = 0.8, kMinElongation = 1.5;
-  cv::Mat wall(layout.height, layout.width, CV_8U);
+  constexpr double kMinFaceShare = 0.8, kMinElongation = 1.5, kThinnestItemM = 0.3;
+  cv::Mat wall(layout.height, layout.width, CV_8U), unknown(layout.height, layout.width, CV_8U);
+  for (int r = 0; r < layout.height; ++r)
+    for (int c = 0; c < layout.width; ++c) {
+      wall.at<std::uint8_t>(r, c) = layout.at(c, r) == Cell::kWall ? 1 : 0;
+      unknown.at<std::uint8_t>(r, c) = layout.at(c, r) == Cell::kUnknown ? 1 : 0;
+    }
+  // The unknown that reaches the map's edge is the unseen world beyond the scan: a wall whose
+  // wall band was not seen (the far end of a corridor, a face seen through a door under its
+  // lintel) borders it. Such a face leaves the list too, but is not marked as wall: the rooms
+  // step finds the room's edge at the unknown behind it, as before.
+  cv::Mat lab;
+  const int n = cv::connectedComponents(unknown, lab, 8, CV_32S);
+  std::vector<std::uint8_t> outside(static_cast<std::size_t>(n), 0);
   for (int r = 0; r < layout.height; ++r)
     for (int c = 0; c < layout.width; ++c)
-      wall.at<std::uint8_t>(r, c) = layout.at(c, r) == Cell::kWall ? 1 : 0;
-  cv::dilate(
-      wall, wall,
-      cv::getStructuringElement(cv::MORPH_RECT, {2 * kWallFaceCells + 1, 2 * kWallFaceCells + 1}));
+      if (r == 0 || c == 0 || r == layout.height - 1 || c == layout.width - 1)
+        outside[lab.at<int>(r, c)] = 1;
+  outside[0] = 0;
+  cv::Mat edge(layout.height, layout.width, CV_8U);
+  for (int r = 0; r < layout.height; ++r)
+    for (int c = 0; c < layout.width; ++c)
+      edge.at<std::uint8_t>(r, c) = wall.at<std::uint8_t>(r, c) || outside[lab.at<int>(r, c)];
+  const cv::Mat square =
+      cv::getStructuringElement(cv::MORPH_RECT, {2 * kWallFaceCells + 1, 2 * kWallFaceCells + 1});
+  cv::dilate(wall, wall, square);
+  cv::dilate(edge, edge, square);
   std::erase_if(res.objects, [&](const FurnitureObject& o) {
     if (o.kind != ObjectKind::kFurniture || !o.own_cells.empty()) return false;
     if (o.box.length_m < kMinElongation * o.box.width_m) return false;
-    std::int64_t near = 0;
+    std::int64_t near_wall = 0, near_edge = 0;
     for (int r = o.min_cell.row; r <= o.max_cell.row; ++r)
       for (int c = o.min_cell.col; c <= o.max_cell.col; ++c)
-        near += res.labels.at(c, r) == o.id && wall.at<std::uint8_t>(r, c);
-    if (static_cast<double>(near) < kMinFaceShare * static_cast<double>(o.cells)) return false;
+        if (res.labels.at(c, r) == o.id) {
+          near_wall += wall.at<std::uint8_t>(r, c);
+          near_edge += edge.at<std::uint8_t>(r, c);
+        }
+    const double need = kMinFaceShare * static_cast<double>(o.cells);
+    const bool a_wall = static_cast<double>(near_wall) >= need;
+    // Beside the unseen world, only a strip thinner than the thinnest item: a sparse scan's
+    // cabinet is a ring of faces around unseen cells that reach the map's edge through its gaps.
+    if (!a_wall && (o.box.width_m >= kThinnestItemM || static_cast<double>(near_edge) < need))
+      return false;
     for (int r = o.min_cell.row; r <= o.max_cell.row; ++r)
       for (int c = o.min_cell.col; c <= o.max_cell.col; ++c)
         if (res.labels.at(c, r) == o.id) {
           res.labels.at(c, r) = 0;
-          res.wall_cells.at(c, r) = 1;
+          if (a_wall) res.wall_cells.at(c, r) = 1;
         }
     res.left_over_cells += o.cells;
     ++res.left_over_pieces;
