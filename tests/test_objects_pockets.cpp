@@ -184,3 +184,44 @@ TEST(Objects, ThinStripsBesideTheUnseenWorldAreFacesNotWalls) {
   EXPECT_NE(res.labels.at(28, 25), 0);
   EXPECT_EQ(res.left_over_cells, 32);
 }
+
+TEST(Objects, ALowRoomsCeilingOverAShelfIsNoPartOfIt) {
+  // A 40 x 30 room, furniture band up to 2.0 m (layer 40), the storey's ceiling at 3.5 m, this
+  // room's own at 2.7 m: a return at layer 54 over every free cell. A shelf 1.8 m high along the
+  // north wall: its front row holds the face from the floor up, the rows behind hold only the
+  // ceiling above them (the scanner saw the ceiling, not the shelf's body). The ceiling lies over
+  // the free floor too, so it gives those cells no height: one shelf, 1.8 m high, not a face and
+  // a second object up to the ceiling. A tall cabinet's top at 2.1 m, seen over its body only,
+  // stays its top.
+  const int w = 40, h = 30;
+  Grid<Cell> L = walled_room(w, h);
+  auto g = voxels(w, h, 80);
+  auto layers = flat_layers();
+  layers.ceiling_layer = 70;
+  layers.furniture_band.lo_layer = 2;
+  layers.furniture_band.hi_layer = 40;
+  for (int r = 1; r < h - 1; ++r)
+    for (int c = 1; c < w - 1; ++c) g.counts[(54 * g.ny + r) * g.nx + c] = 3;
+  for (int c = 5; c <= 20; ++c) {
+    for (int r = 21; r <= 28; ++r) L.at(c, r) = Cell::kFurniture;
+    fill_column(g, c, 21, 0.0, 1.8);
+  }
+  for (int c = 28; c <= 35; ++c) {  // the cabinet: face on row 5, its top over rows 5-10
+    for (int r = 5; r <= 10; ++r) {
+      L.at(c, r) = Cell::kFurniture;
+      g.counts[(54 * g.ny + r) * g.nx + c] = 0;  // under the cabinet's top, no ceiling seen
+      fill_column(g, c, r, 2.05, 2.1);
+    }
+    fill_column(g, c, 5, 0.0, 2.1);
+  }
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  const auto res = extract_objects(L, geo, g, layers, every_size());
+  std::vector<FurnitureObject> furniture;  // the low ceiling itself is listed as a lamp
+  for (const auto& o : res.objects)
+    if (o.kind == ObjectKind::kFurniture) furniture.push_back(o);
+  ASSERT_EQ(furniture.size(), 2u);
+  EXPECT_EQ(furniture[0].cells, 8 * 6);  // the cabinet (rows 5-10 first)
+  EXPECT_NEAR(furniture[0].z_max_m, 2.1, 0.051);
+  EXPECT_EQ(furniture[1].cells, 16 * 8);
+  EXPECT_NEAR(furniture[1].z_max_m, 1.8, 0.051);
+}

@@ -33,6 +33,21 @@ Column column_extent(const cloud::VoxelGrid& g, int col, int row, std::int64_t f
   return c;
 }
 
+// True when layer z (one layer either way) is occupied over a free cell of the layout within
+// kOverFreeReachM of (col, row).
+bool level_over_free(const Grid<Cell>& layout, const cloud::VoxelGrid& g, int col, int row,
+                     std::int64_t z) {
+  constexpr double kOverFreeReachM = 0.5;
+  const int reach = static_cast<int>(std::ceil(kOverFreeReachM / g.cell_m));
+  for (int r = row - reach; r <= row + reach; ++r)
+    for (int c = col - reach; c <= col + reach; ++c) {
+      if (!layout.contains(c, r) || layout.at(c, r) != Cell::kFree) continue;
+      for (std::int64_t k = std::max<std::int64_t>(z - 1, 0); k <= std::min(z + 1, g.nz - 1); ++k)
+        if (g.count(c, r, k)) return true;
+    }
+  return false;
+}
+
 bool floor_seen(const cloud::VoxelGrid& g, int col, int row, std::int64_t floor_layer) {
   for (std::int64_t z = std::max<std::int64_t>(0, floor_layer - 1);
        z <= std::min(floor_layer + 1, g.nz - 1); ++z)
@@ -114,6 +129,13 @@ ColumnScan scan_columns(const Grid<Cell>& layout, const cloud::VoxelGrid& voxels
         // Below the ceiling (and the ceiling's own smear): a cell with only ceiling returns above
         // it has no height.
         cols.at(c, r) = column_extent(voxels, c, r, floor_layer, ceiling_layer - 2, max_gap);
+        // A run that starts above the furniture band at a level that also lies over free floor
+        // nearby is the ceiling of a room lower than the storey's (over a shelf's unseen body)
+        // or a lamp: no height of the cell's own. A tall shelf's top lies over the shelf only.
+        if (layers.furniture_band.hi_layer >= layers.furniture_band.lo_layer &&
+            cols.at(c, r).bottom > layers.furniture_band.hi_layer &&
+            level_over_free(layout, voxels, c, r, cols.at(c, r).bottom))
+          cols.at(c, r) = Column{};
         bool wall_face = false;
         if (cols.at(c, r).top >= layers.wall_band.lo_layer)
           for (int dr = -kWallFaceCells; dr <= kWallFaceCells && !wall_face; ++dr)
