@@ -50,4 +50,14 @@ inline void fill_column(cloud::VoxelGrid& g, int c, int r, double z0, double z1,
     g.counts[(z * g.ny + r) * g.nx + c] = n;
 }
 
+// Furniture cells c0..c1 x r0..r1 in the layout, each column filled from the floor to `top`.
+inline void put_block(Grid<Cell>& L, cloud::VoxelGrid& g, int c0, int c1, int r0, int r1,
+                      double top) {
+  for (int r = r0; r <= r1; ++r)
+    for (int c = c0; c <= c1; ++c) {
+      L.at(c, r) = Cell::kFurniture;
+      fill_column(g, c, r, 0.0, top);
+    }
+}
+
 }  // namespace objects_fixtures

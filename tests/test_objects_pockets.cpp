@@ -128,16 +128,9 @@ TEST(Objects, ThinStripsAlongAWallAreItsFaceNotObjects) {
   const int w = 40, h = 30;
   Grid<Cell> L = walled_room(w, h);
   auto g = voxels(w, h, 50);
-  auto put = [&](int c0, int c1, int r0, int r1, double top) {
-    for (int r = r0; r <= r1; ++r)
-      for (int c = c0; c <= c1; ++c) {
-        L.at(c, r) = Cell::kFurniture;
-        fill_column(g, c, r, 0.0, top);
-      }
-  };
-  put(8, 23, 1, 2, 1.8);    // the face strip
-  put(8, 23, 22, 28, 1.8);  // the shelf
-  put(34, 38, 1, 5, 0.4);   // the bin in the corner
+  put_block(L, g, 8, 23, 1, 2, 1.8);    // the face strip
+  put_block(L, g, 8, 23, 22, 28, 1.8);  // the shelf
+  put_block(L, g, 34, 38, 1, 5, 0.4);   // the bin in the corner
   const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
   const auto res = extract_objects(L, geo, g, flat_layers(), every_size());
   ASSERT_EQ(res.objects.size(), 2u);
@@ -165,16 +158,9 @@ TEST(Objects, ThinStripsBesideTheUnseenWorldAreFacesNotWalls) {
   for (int r = 10; r <= 20; ++r)
     for (int c = 10; c <= 14; ++c) L.at(c, r) = Cell::kUnknown;  // the pocket
   auto g = voxels(w, h, 50);
-  auto put = [&](int c0, int c1, int r0, int r1, double top) {
-    for (int r = r0; r <= r1; ++r)
-      for (int c = c0; c <= c1; ++c) {
-        L.at(c, r) = Cell::kFurniture;
-        fill_column(g, c, r, 0.0, top);
-      }
-  };
-  put(30, 31, 2, 17, 1.8);   // the face strip, beside the unseen world
-  put(25, 31, 20, 27, 1.8);  // the shelf
-  put(15, 16, 5, 20, 1.8);   // a strip beside the pocket
+  put_block(L, g, 30, 31, 2, 17, 1.8);   // the face strip, beside the unseen world
+  put_block(L, g, 25, 31, 20, 27, 1.8);  // the shelf
+  put_block(L, g, 15, 16, 5, 20, 1.8);   // a strip beside the pocket
   const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
   const auto res = extract_objects(L, geo, g, flat_layers(), every_size());
   ASSERT_EQ(res.objects.size(), 2u);

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "indoormap/core/errors.hpp"
+#include "inner_walls.hpp"
 
 namespace indoormap::layout {
 
@@ -121,35 +122,6 @@ Grid<std::uint8_t> hanging_mask(const Grid<std::uint8_t>& walls, const Grid<std:
 }
 
 }  // namespace
-
-Grid<std::uint8_t> wall_inside(const Grid<std::uint8_t>& walls, double cell_m, double max_span_m) {
-  const int w = walls.width, h = walls.height;
-  const int dirs[4][2] = {{1, 0}, {0, 1}, {1, 1}, {-1, 1}};
-  constexpr int kFar = 1 << 20;
-  Grid<std::uint8_t> out(w, h, 0);
-  Grid<int> before(w, h, kFar), after(w, h, kFar);  // steps to the nearest wall cell
-  for (const auto& d : dirs) {
-    const int dc = d[0], dr = d[1];
-    const double step_m = cell_m * std::hypot(dc, dr);
-    for (int r = 0; r < h; ++r)
-      for (int c = 0; c < w; ++c)
-        before.at(c, r) = walls.at(c, r) ? 0
-                          : before.contains(c - dc, r - dr)
-                              ? std::min(kFar, before.at(c - dc, r - dr) + 1)
-                              : kFar;
-    for (int r = h - 1; r >= 0; --r)
-      for (int c = w - 1; c >= 0; --c)
-        after.at(c, r) = walls.at(c, r) ? 0
-                         : after.contains(c + dc, r + dr)
-                             ? std::min(kFar, after.at(c + dc, r + dr) + 1)
-                             : kFar;
-    for (std::size_t i = 0; i < out.size(); ++i)
-      if (!walls.data[i] && before.data[i] < kFar && after.data[i] < kFar &&
-          (before.data[i] + after.data[i]) * step_m <= max_span_m + 1e-9)
-        out.data[i] = 1;
-  }
-  return out;
-}
 
 Grid<std::uint8_t> passage_area(const Grid<std::uint8_t>& walls, int min_lines) {
   const int w = walls.width, h = walls.height;
@@ -351,28 +323,6 @@ void classify(const Grid<std::uint8_t>& walls, const Grid<std::uint8_t>& furn,
   }
 }
 
-// Adds to `walls` the cells of `cand` inside the passage area, neither flooded nor seen, whose
-// 8-connected piece spans more than 2 * max_span_m along an axis. A pillar's inside is left as
-// it is: the objects step describes a pillar by its ring of faces; a wall's inside is longer.
-void add_long_pieces(const Grid<std::uint8_t>& cand_in, const Grid<std::uint8_t>& passage,
-                     const Grid<std::uint8_t>& free_mask, const Grid<std::uint8_t>* seen,
-                     double cell_m, double max_span_m, Grid<std::uint8_t>& walls) {
-  Grid<std::uint8_t> cand(walls.width, walls.height, 0);
-  for (std::size_t i = 0; i < cand.size(); ++i)
-    cand.data[i] =
-        cand_in.data[i] && passage.data[i] && !free_mask.data[i] && !(seen && seen->data[i]);
-  cv::Mat lab, st, cen;
-  cv::connectedComponentsWithStats(as_mat(cand), lab, st, cen, 8, CV_32S);
-  const int max_cells = static_cast<int>(std::lround(2.0 * max_span_m / cell_m));
-  for (int row = 0; row < walls.height; ++row)
-    for (int col = 0; col < walls.width; ++col) {
-      const int k = lab.at<int>(row, col);
-      if (k > 0 &&
-          std::max(st.at<int>(k, cv::CC_STAT_WIDTH), st.at<int>(k, cv::CC_STAT_HEIGHT)) > max_cells)
-        walls.at(col, row) = 1;
-    }
-}
-
 }  // namespace
 
 LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::uint8_t>& furniture,
@@ -448,19 +398,9 @@ LayoutResult build_layout(const Grid<std::uint8_t>& walls_in, const Grid<std::ui
   place_seeds(floodable, geo, scanners_map, params, r);
   if (r.seeds_estimated && seen) add_seen_seeds(floodable, *seen, geo.cell_m(), r.seeds);
   const Grid<std::uint8_t> free_mask = flood_free(floodable, r.seeds);
-  if (params.wall_max_thickness_m > 0) {
-    // The faces of one wall in M_w with its inside unseen; then the walls one of whose faces
-    // only the furniture band holds (computed before the first are added: their runs ask for
-    // one wall face).
-    Grid<std::uint8_t> slabs;
-    if (seen)
-      slabs = wall_slabs(walls, furniture, *seen, geo.cell_m(), params.wall_max_thickness_m);
-    add_long_pieces(wall_inside(walls, geo.cell_m(), params.wall_max_thickness_m), r.passage,
-                    free_mask, seen, geo.cell_m(), params.wall_max_thickness_m, walls);
-    if (seen)
-      add_long_pieces(slabs, r.passage, free_mask, seen, geo.cell_m(), params.wall_max_thickness_m,
-                      walls);
-  }
+  if (params.wall_max_thickness_m > 0)
+    detail::add_inner_walls(furniture, seen, r.passage, free_mask, geo.cell_m(),
+                            params.wall_max_thickness_m, walls);
 
   // Furniture: furniture-band obstacles inside the passage area, plus small unreachable pockets
   // that touch them (behind and between objects).

@@ -1,0 +1,106 @@
+// M_r's walls between rooms and its flood on a floor (issue 16): the inside of a wall between two
+// rooms, a wall with one face in the furniture band, the rooms of a floor scanned without
+// positions.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "indoormap/layout/layout.hpp"
+#include "layout_fixtures.hpp"
+
+// Issue 16: two rooms with a wall 0.4 m thick between them (faces seen, inside not) and a
+// pillar in one room, 0.1 m cells. The wall's inside becomes wall; the pillar's inside (0.2 m)
+// is left as it is (unknown); with wall_max_thickness_m 0 the wall's inside stays unknown.
+TEST(Layout, InsideOfAWallBetweenRoomsIsWallAPillarsIsLeft) {
+  std::vector<std::string> rows(14, "#..........#..#........#");
+  rows.front() = rows.back() = std::string(24, '#');
+  for (int r = 5; r <= 8; ++r) rows[r].replace(3, 4, r == 5 || r == 8 ? "####" : "#..#");
+  const auto walls = parse(rows);
+  const Grid<std::uint8_t> furn(walls.width, walls.height, 0);
+  const GridGeometry geo({0.0, 0.0}, 0.1, walls.width, walls.height);
+  const std::vector<Eigen::Vector2d> scanners{{0.85, 0.25}, {1.85, 0.65}};
+  LayoutParams on;
+  ASSERT_EQ(on.wall_max_thickness_m, 0.5);  // the default
+  const LayoutResult r = build_layout(walls, furn, geo, scanners, on);
+  for (int row = 1; row <= 12; ++row)
+    for (int col = 12; col <= 13; ++col)
+      EXPECT_EQ(r.layout.at(col, row), Cell::kWall) << col << "," << row;
+  for (int row = 6; row <= 7; ++row)  // grid rows of the pillar's inside (picture rows 6-7)
+    for (int col = 4; col <= 5; ++col) EXPECT_NE(r.layout.at(col, row), Cell::kWall);
+  EXPECT_EQ(r.layout.at(8, 2), Cell::kFree);
+  EXPECT_EQ(r.layout.at(18, 6), Cell::kFree);
+  LayoutParams off;
+  off.wall_max_thickness_m = 0.0;
+  const LayoutResult o = build_layout(walls, furn, geo, scanners, off);
+  for (int row = 1; row <= 12; ++row)
+    for (int col = 12; col <= 13; ++col) EXPECT_EQ(o.layout.at(col, row), Cell::kUnknown);
+}
+
+// A slab seen from both sides, its wall band on one face only: 'F' furniture band, 'W' wall
+// band, '.' seen free, ' ' unseen; 0.1 m cells, walls at most 0.5 m thick. Only the first block
+// is a wall: a face in each band, 0.4 m from seen floor to seen floor. The second is a wall with
+// both faces in M_w and a cabinet against it (two wall faces in the run), the third a shelf 0.4 m
+// deep against a wall seen from the far side (0.7 m), the fourth a table (no wall face).
+TEST(WallSlabs, OneFaceInEachBandIsAWall) {
+  // Rows of unseen cells keep the blocks apart (no line ends on seen floor between them).
+  const std::vector<std::string> rows = {"..F  W.....", "..F  W.....", "..F  W.....", "           ",
+                                         "..W  WF....", "..W  WF....", "..W  WF....", "           ",
+                                         "..FFFF  W..", "..FFFF  W..", "..FFFF  W..", "           ",
+                                         "..FFF......", "..FFF......", "..FFF......"};
+  const auto walls = parse(rows, 'W'), furn = parse(rows, 'F'), seen = parse(rows, '.');
+  const auto slabs = wall_slabs(walls, furn, seen, 0.1, 0.5);
+  std::vector<std::string> expected(rows.size(), "...........");
+  for (int r = 0; r <= 2; ++r) expected[r] = "..####.....";
+  EXPECT_EQ(render01(slabs), render01(parse(expected)));
+  // 0.3 m: the first block's run (0.4 m) is too long.
+  const auto thin = wall_slabs(walls, furn, seen, 0.1, 0.3);
+  EXPECT_EQ(render01(thin), render01(parse(std::vector<std::string>(rows.size(), "..........."))));
+}
+
+// Two rooms, 0.1 m cells, and a wall 0.3 m thick between them whose left face only the
+// furniture band holds (a mobile scanner's beams end below the wall band there): with the seen
+// map it is wall in M_r from face to face, not a furniture strip along the left room.
+TEST(Layout, AWallWithOneFaceInTheFurnitureBandIsWall) {
+  std::vector<std::string> rows(14, "#..........F W..........#");
+  rows.front() = rows.back() = std::string(25, '#');
+  const auto walls = parse(rows, '#'), furn = parse(rows, 'F');
+  auto wall_face = parse(rows, 'W');
+  Grid<std::uint8_t> all_walls = walls;
+  for (std::size_t i = 0; i < all_walls.size(); ++i) all_walls.data[i] |= wall_face.data[i];
+  const auto seen = parse(rows, '.');
+  const GridGeometry geo({0.0, 0.0}, 0.1, all_walls.width, all_walls.height);
+  const std::vector<Eigen::Vector2d> scanners{{0.55, 0.65}, {1.95, 0.65}};
+  const LayoutResult r = build_layout(all_walls, furn, geo, scanners, {}, nullptr, nullptr, &seen);
+  for (int row = 1; row <= 12; ++row)
+    for (int col = 11; col <= 13; ++col)
+      EXPECT_EQ(r.layout.at(col, row), Cell::kWall) << col << "," << row;
+  EXPECT_EQ(r.layout.at(5, 6), Cell::kFree);
+  EXPECT_EQ(r.layout.at(18, 6), Cell::kFree);
+  LayoutParams off;
+  off.wall_max_thickness_m = 0.0;
+  const LayoutResult o = build_layout(all_walls, furn, geo, scanners, off, nullptr, nullptr, &seen);
+  EXPECT_EQ(o.layout.at(11, 6), Cell::kFurniture);
+}
+
+// Two rooms 2 m x 1.2 m apart behind a closed wall, 0.1 m cells, scanned without positions: the
+// farthest free cell seeds one room, the floor seen in the other seeds it too (a floor mapped
+// without its trajectory). A piece of seen floor under 2 m2 (the right room's, cut down) does not.
+TEST(Layout, WithoutPositionsEveryRoomWithSeenFloorIsFlooded) {
+  std::vector<std::string> rows(14, "#...................#....................#");
+  rows.front() = rows.back() = std::string(42, '#');
+  const auto walls = parse(rows);
+  const Grid<std::uint8_t> furn(walls.width, walls.height, 0);
+  Grid<std::uint8_t> seen(walls.width, walls.height, 0);
+  for (std::size_t i = 0; i < seen.size(); ++i) seen.data[i] = !walls.data[i];
+  const GridGeometry geo({0.0, 0.0}, 0.1, walls.width, walls.height);
+  const LayoutResult r = build_layout(walls, furn, geo, {}, {}, nullptr, nullptr, &seen);
+  EXPECT_TRUE(r.seeds_estimated);
+  EXPECT_EQ(r.layout.at(10, 6), Cell::kFree);
+  EXPECT_EQ(r.layout.at(30, 6), Cell::kFree);
+  // Seen floor in the right room: 19 cells (0.19 m2), under 2 m2.
+  for (int col = 21; col < 41; ++col)
+    for (int row = 1; row < 13; ++row) seen.at(col, row) = row == 6 && col < 40;
+  const LayoutResult s = build_layout(walls, furn, geo, {}, {}, nullptr, nullptr, &seen);
+  EXPECT_EQ(s.layout.at(10, 6) == Cell::kFree, s.layout.at(30, 6) != Cell::kFree);
+}
