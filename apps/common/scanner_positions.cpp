@@ -25,6 +25,7 @@ void add_trajectory(const std::string& file, const CloudExtent& extent, PointClo
     cloud.scanners.push_back(p);
   }
   cloud.origins.clear();
+  cloud.scanners_on_path = !t.positions.empty();
 }
 
 }  // namespace indoormap::app

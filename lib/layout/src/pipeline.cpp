@@ -233,12 +233,16 @@ void map_voxelized(PointCloud cloud, const MapParams& params, MapResult& r) {
   for (const auto& w : r.nav.warnings) r.warnings.push_back(w);
   r.timings.push_back({"nav_map", sw.lap_ms()});
   // Only for a sparse scan (LayoutParams::sparse_floor_fill): on a dense one the rule cost
-  // object precision (seeds 21-40: 0.82 to 0.77) for nothing.
+  // object precision (seeds 21-40: 0.82 to 0.77) for nothing. And for a moving scanner's path:
+  // its beams leave the ends and tops of cabinets unseen, the flood ran in through them, while
+  // the rays from along its path show the free floor (docs/pipeline.md, step 5).
   r.floor_fill = floor_fill(r.voxels, r.layers.floor_layer);
   const Grid<std::uint8_t>& evidence = r.nav.observed_free;  // not the filled floor holes
-  const bool sparse = r.floor_fill < params.layout.sparse_floor_fill;
+  r.free_from_evidence =
+      params.layout.free_needs_evidence && (r.floor_fill < params.layout.sparse_floor_fill ||
+                                            (cloud.scanners_on_path && !cloud.scanners.empty()));
   r.layout = build_layout(r.walls, r.furniture, r.geometry, seeds, params.layout, &support,
-                          sparse ? &evidence : nullptr, &evidence);
+                          r.free_from_evidence ? &evidence : nullptr, &evidence);
   for (const auto& w : r.layout.warnings) r.warnings.push_back(w);
   r.timings.push_back({"layout", sw.lap_ms()});
   r.cloud_map = std::move(cloud);

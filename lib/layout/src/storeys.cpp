@@ -91,6 +91,7 @@ namespace {
 // The points (and their scanners and origin spans) with z in [lo, hi).
 PointCloud slice(const PointCloud& c, double lo, double hi) {
   PointCloud out;
+  out.scanners_on_path = c.scanners_on_path;
   auto in = [&](float z) { return z >= lo && z < hi; };
   std::vector<std::size_t> scanner_index(c.scanners.size(), static_cast<std::size_t>(-1));
   for (std::size_t k = 0; k < c.scanners.size(); ++k)

@@ -21,6 +21,9 @@ struct PointCloud {
     std::size_t scanner = 0;
   };
   std::vector<OriginSpan> origins;
+  /// The positions are a moving scanner's path (a trajectory): rays from along it cover the
+  /// free space, so free space needs their evidence (make_map).
+  bool scanners_on_path = false;
 };
 
 }  // namespace indoormap

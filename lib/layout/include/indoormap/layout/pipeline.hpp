@@ -53,6 +53,9 @@ struct MapResult {
   std::optional<double> viewpoint_occluded_share;
   bool viewpoint_dropped = false;
   double floor_fill = 1.0;  ///< floor points / cells of their 0.2 m blocks (sparse scans: low)
+  /// M_r's flood ran over the cells the scan shows free only (a sparse scan, a moving scanner's
+  /// path; LayoutParams::free_needs_evidence).
+  bool free_from_evidence = false;
   std::vector<StageTime> timings;
   std::vector<std::string> warnings;  ///< from every stage, in order
 };
