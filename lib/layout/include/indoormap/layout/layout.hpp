@@ -91,9 +91,10 @@ Grid<std::uint8_t> wall_inside(const Grid<std::uint8_t>& walls, double cell_m, d
 
 /// Cells of a wall one of whose faces only the furniture band holds (LayoutParams::
 /// wall_max_thickness_m): along a row, column or diagonal, a run of cells not `seen` (the scan
-/// shows them free) between two seen cells, at most max_span_m long (cells times step), holding
-/// a wall cell and a furniture cell. The scan saw a slab from both sides, the wall band on one
-/// face only (a mobile scanner's beams end below the wall band near a room's walls): a wall.
+/// shows them free) between two seen cells, at most max_span_m long (cells times step), whose
+/// wall cells are one unbroken piece at one end and whose cell at the other end is a furniture
+/// cell. The scan saw a slab from both sides, the wall band on one face only (a mobile
+/// scanner's beams end below the wall band near a room's walls): a wall.
 /// Furniture against a wall makes the run at least its depth plus the wall's thickness; a pillar
 /// or a table holds no wall cell. Values: 0 / 1.
 Grid<std::uint8_t> wall_slabs(const Grid<std::uint8_t>& walls, const Grid<std::uint8_t>& furniture,
