@@ -219,7 +219,8 @@ void measure_objects(const GridGeometry& geo, const cloud::VoxelGrid& voxels, Ob
 // of a wall seen at a grazing angle, a doorway's reveal under its lintel, the face of a wall
 // whose top ends in a low room), not furniture standing in front of the wall: the thinnest item
 // (a shelf, 0.3 m deep) reaches beyond that zone (0.15 m). A compact piece (a bin in a corner)
-// stays. Such pieces leave the list, count as left over and are marked in wall_cells.
+// stays. Such pieces leave the list and count as left over; those beside a wall are marked in
+// wall_cells (the unseen world below is no wall).
 void drop_wall_faces(const Grid<Cell>& layout, ObjectsResult& res) {
   constexpr double kMinFaceShare = 0.8, kMinElongation = 1.5, kThinnestItemM = 0.3;
   cv::Mat wall(layout.height, layout.width, CV_8U), unknown(layout.height, layout.width, CV_8U);
