@@ -1,6 +1,7 @@
 #include "indoormap/cloud/voxel.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -12,27 +13,39 @@ namespace indoormap::cloud {
 
 namespace {
 
-// The main body of the data along one axis: from the sample's median outward until an empty gap
-// of at least `gap` (two empty bins of gap/2). Linear time: a histogram instead of a sort. The
-// walk stops at max_extent from the median, which bounds the histogram.
-std::pair<double, double> gap_limited_range(std::vector<float>& v, double gap) {
-  constexpr double kMaxExtent = 5000.0;  // metres from the median; far beyond any building
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  const double median = *mid;
-  const double bin = gap / 2.0;
-  const auto half = static_cast<std::int64_t>(std::ceil(kMaxExtent / bin));
-  std::vector<std::uint32_t> hist(static_cast<std::size_t>(2 * half + 1), 0);
-  for (float x : v) {
-    const double k = std::floor((x - median) / bin);
-    if (k >= -half && k <= half) ++hist[static_cast<std::size_t>(k + half)];
+// A histogram of one axis in bins of `bin` metres, bin `half` starting at `origin` (a sample's
+// median), over kMaxExtent metres either side: bounded memory whatever the data.
+struct AxisHistogram {
+  static constexpr double kMaxExtent = 5000.0;  // metres; far beyond any building
+  double origin = 0.0, bin = 1.0;
+  std::int64_t half = 0;
+  std::vector<std::uint64_t> count;
+
+  AxisHistogram() = default;
+  AxisHistogram(double origin_m, double bin_m)
+      : origin(origin_m),
+        bin(bin_m),
+        half(static_cast<std::int64_t>(std::ceil(kMaxExtent / bin_m))),
+        count(static_cast<std::size_t>(2 * half + 1), 0) {}
+  void add(float x) {
+    const double k = std::floor((x - origin) / bin);  // NaN fails both tests below
+    if (k >= -half && k <= half) ++count[static_cast<std::size_t>(k + half)];
   }
+  void merge(const AxisHistogram& o) {
+    for (std::size_t i = 0; i < count.size(); ++i) count[i] += o.count[i];
+  }
+};
+
+// The main body of the data along one axis: from the origin outward until an empty gap of at
+// least two bins. Walking a histogram of every point (not a sample) keeps a far wall that holds
+// few points (a corridor's end 20 m from its scanner) while a gap still cuts off what lies beyond.
+std::pair<double, double> main_body(const AxisHistogram& h) {
   auto walk = [&](std::int64_t step) {
-    std::int64_t k = half, last = half;
+    std::int64_t k = h.half, last = h.half;
     int empty = 0;
-    while (k + step >= 0 && k + step <= 2 * half && empty < 2) {
+    while (k + step >= 0 && k + step <= 2 * h.half && empty < 2) {
       k += step;
-      if (hist[static_cast<std::size_t>(k)]) {
+      if (h.count[static_cast<std::size_t>(k)]) {
         last = k;
         empty = 0;
       } else {
@@ -42,8 +55,14 @@ std::pair<double, double> gap_limited_range(std::vector<float>& v, double gap) {
     return last;
   };
   const std::int64_t lo = walk(-1), hi = walk(+1);
-  return {median + static_cast<double>(lo - half) * bin,
-          median + static_cast<double>(hi - half + 1) * bin};
+  return {h.origin + static_cast<double>(lo - h.half) * h.bin,
+          h.origin + static_cast<double>(hi - h.half + 1) * h.bin};
+}
+
+double sample_median(std::vector<float>& v) {
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
 }
 
 void require(bool ok, const char* what) {
@@ -97,28 +116,34 @@ Bounds3 robust_bounds(const std::vector<Eigen::Vector3f>& points, const VoxelPar
   }
   if (axis[0].empty()) throw InputError("", "the cloud has no finite points");
 
-  Bounds3 core;
-  for (int d = 0; d < 3; ++d) {
-    auto [lo, hi] = gap_limited_range(axis[d], params.bounds_gap_m);
-    core.lo_m[d] = lo;
-    core.hi_m[d] = hi;
-  }
-  // The sample may miss the sparse extremes of the main body (a far wall); take every point
-  // within one gap of the sampled range.
+  // The sample only places the histograms; the main body comes from every point.
+  const double bin = params.bounds_gap_m / 2.0;
+  std::array<AxisHistogram, 3> proto{AxisHistogram(sample_median(axis[0]), bin),
+                                     AxisHistogram(sample_median(axis[1]), bin),
+                                     AxisHistogram(sample_median(axis[2]), bin)};
+  auto hists = parallel_parts(points.size(), 1 << 20, [&](std::size_t i0, std::size_t i1) {
+    std::array<AxisHistogram, 3> h = proto;
+    for (std::size_t i = i0; i < i1; ++i)
+      for (int d = 0; d < 3; ++d) h[d].add(points[i][d]);
+    return h;
+  });
+  for (std::size_t k = 1; k < hists.size(); ++k)
+    for (int d = 0; d < 3; ++d) hists[0][d].merge(hists[k][d]);
   Bounds3 b;
   b.lo_m.setConstant(std::numeric_limits<double>::infinity());
   b.hi_m.setConstant(-std::numeric_limits<double>::infinity());
-  const float lx = static_cast<float>(core.lo_m.x() - params.bounds_gap_m),
-              ly = static_cast<float>(core.lo_m.y() - params.bounds_gap_m),
-              lz = static_cast<float>(core.lo_m.z() - params.bounds_gap_m);
-  const float hx = static_cast<float>(core.hi_m.x() + params.bounds_gap_m),
-              hy = static_cast<float>(core.hi_m.y() + params.bounds_gap_m),
-              hz = static_cast<float>(core.hi_m.z() + params.bounds_gap_m);
+  Eigen::Vector3f lo, hi;
+  for (int d = 0; d < 3; ++d) {
+    const auto [l, h] = main_body(hists[0][d]);
+    lo[d] = static_cast<float>(l);
+    hi[d] = static_cast<float>(h);
+  }
+  const float lx = lo.x(), ly = lo.y(), lz = lo.z(), hx = hi.x(), hy = hi.y(), hz = hi.z();
   struct Part {
     float mnx, mny, mnz, mxx, mxy, mxz;
     bool any = false;
   };
-  // Two passes' worth of memory traffic: the points are split between the cores.
+  // The exact bounds of the points inside the main body; the points are split between the cores.
   const auto parts = parallel_parts(points.size(), 1 << 20, [&](std::size_t i0, std::size_t i1) {
     Part r{hx, hy, hz, lx, ly, lz};
     for (std::size_t i = i0; i < i1; ++i) {

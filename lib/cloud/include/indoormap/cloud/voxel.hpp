@@ -39,9 +39,11 @@ struct VoxelGrid : VoxelGeometry {
   }
 };
 
-/// Bounds of the main body of the data: per axis, the run of a sample around the median with no
-/// empty gap wider than bounds_gap_m, then refined on all points within one gap of it. Points seen
-/// through a window far outside the room do not stretch the grid. Throws InputError for < 1 point.
+/// Bounds of the main body of the data: per axis, the run of all points around a sample's median
+/// with no empty gap of bounds_gap_m or more (a histogram of bounds_gap_m / 2 bins), then the
+/// exact extent of the points inside it. Points seen through a window far outside the room do not
+/// stretch the grid; a far wall with few points (a long corridor's end) stays in it. Throws
+/// InputError for a cloud without a finite point.
 Bounds3 robust_bounds(const std::vector<Eigen::Vector3f>& points, const VoxelParams& params);
 
 /// Counts points per voxel inside bounds. Throws BudgetError (before allocating) when the grid
