@@ -156,6 +156,45 @@ TEST(Objects, ObjectsHighAboveTheFloorAreHanging) {
   EXPECT_EQ(res.objects[0].kind, ObjectKind::kFurniture);
 }
 
+TEST(Objects, ALampWithSomeCellsOfTheWallFaceItTouchesIsHanging) {
+  // A lamp 1.2 x 0.3 m at 1.95-2.05 m, the floor under it seen, its end against a wall whose face
+  // (two cells, floor to 2.05 m) joins its piece: most of its cells hang, so the object is
+  // "hanging" from 1.95 m, not furniture standing on the floor. A shelf's top over a hidden
+  // floor (a face row, then top-only cells) is no lamp, though most of its cells start high.
+  const int w = 40, h = 20;
+  Grid<Cell> L(w, h, Cell::kFree);
+  auto g = voxels(w, h, 50);
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) fill_column(g, c, r, 0.0, 0.05);  // the floor, seen
+  for (int c = 2; c <= 25; ++c)
+    for (int r = 4; r <= 9; ++r) {
+      L.at(c, r) = Cell::kFurniture;
+      fill_column(g, c, r, 1.95, 2.05);
+    }
+  for (int r = 4; r <= 9; ++r)  // the wall's face at the lamp's end
+    for (int c = 0; c <= 1; ++c) {
+      L.at(c, r) = c == 0 ? Cell::kWall : Cell::kFurniture;
+      fill_column(g, c, r, 0.05, 2.05);
+    }
+  for (int c = 30; c <= 37; ++c)  // the shelf: face on row 12, top-only over rows 13-19
+    for (int r = 12; r < h; ++r) {
+      L.at(c, r) = Cell::kFurniture;
+      for (int z = 0; z < 50; ++z) g.counts[(z * g.ny + r) * g.nx + c] = 0;
+      fill_column(g, c, r, r == 12 ? 0.0 : 1.75, 1.8);
+    }
+  ObjectParams p;
+  p.min_area_m2 = 0.0;
+  p.min_seen_area_m2 = 0.0;
+  const auto res = extract_objects(L, GridGeometry({0, 0}, 0.05, w, h), g, flat_layers(), p);
+  ASSERT_EQ(res.objects.size(), 2u);
+  EXPECT_EQ(res.objects[0].kind, ObjectKind::kHanging);
+  EXPECT_EQ(res.objects[0].cells, 25 * 6);
+  EXPECT_FALSE(res.objects[0].on_floor);
+  EXPECT_NEAR(res.objects[0].z_min_m, 1.95, 1e-9);
+  EXPECT_EQ(res.objects[1].kind, ObjectKind::kFurniture);
+  EXPECT_TRUE(res.objects[1].on_floor);
+}
+
 TEST(Objects, TouchingObjectsOfDifferentHeightsAreSplit) {
   const int w = 10, h = 6;
   Grid<Cell> L(w, h, Cell::kFree);

@@ -97,12 +97,27 @@ struct Acc {
   bool touches_wall = false;
   std::vector<std::int64_t> tops;  // per cell with data
   std::int64_t lintel = 0;         // cells with data under a lintel (lintel_above)
+  // Cells with data that hang: the column's run starts at least hanging_min_clearance_m above
+  // the floor and the floor under it was seen (hanging_cell), and the lowest of those starts.
+  std::int64_t hanging = 0, hanging_bottom = std::numeric_limits<std::int64_t>::max();
 };
+
+// A cell of a hanging object (a lamp, a wall cupboard): its occupied run starts at least
+// `clearance` layers above the floor, and the floor under it was seen. Under a tall shelf's top
+// the floor is hidden by the shelf's body, so its top-only cells do not hang.
+bool hanging_cell(const Column& col, const cloud::VoxelGrid& voxels, int c, int r,
+                  std::int64_t floor_layer, std::int64_t clearance) {
+  return col.top >= 0 && col.bottom - floor_layer >= clearance &&
+         floor_seen(voxels, c, r, floor_layer);
+}
 
 // Per label: its cells, bounding box, voxel range and whether it touches a wall.
 std::vector<Acc> accumulate(const Labels& lab, const Grid<Column>& cols, const Grid<Cell>& layout,
-                            const cloud::VoxelGrid& voxels, const cloud::LayerAnalysis& layers) {
+                            const cloud::VoxelGrid& voxels, const cloud::LayerAnalysis& layers,
+                            const ObjectParams& params) {
   const auto gap = static_cast<std::int64_t>(std::ceil(voxels.to_cells(kOpeningMinGap_m) - 1e-9));
+  const auto clearance =
+      static_cast<std::int64_t>(std::ceil(voxels.to_cells(params.hanging_min_clearance_m) - 1e-9));
   const auto run = static_cast<std::int64_t>(std::ceil(voxels.to_cells(kLintelMin_m) - 1e-9));
   const int w = layout.width, h = layout.height;
   std::vector<Acc> acc(static_cast<std::size_t>(lab.count) + 1);
@@ -120,6 +135,10 @@ std::vector<Acc> accumulate(const Labels& lab, const Grid<Column>& cols, const G
         a.top = std::max(a.top, col.top);
         a.tops.push_back(col.top);
         a.lintel += lintel_above(voxels, c, r, layers.floor_layer, layers.ceiling_layer, gap, run);
+        if (hanging_cell(col, voxels, c, r, layers.floor_layer, clearance)) {
+          ++a.hanging;
+          a.hanging_bottom = std::min(a.hanging_bottom, col.bottom);
+        }
       }
       for (int dr = -1; dr <= 1 && !a.touches_wall; ++dr)
         for (int dc = -1; dc <= 1; ++dc)
@@ -175,8 +194,12 @@ void list_objects(const std::vector<Acc>& acc, const Labels& lab, const GridGeom
     o.touches_wall = a.touches_wall;
     if (a.top >= 0) {
       o.has_height = true;
-      o.on_floor = a.bottom <= floor_layer + 2;
-      o.z_min_m = o.on_floor ? voxels.layer_center_m(floor_layer) : voxels.layer_bottom_m(a.bottom);
+      // Most of its cells hang: a lamp low enough for the furniture band, with a few cells of the
+      // wall's face it touches (which reach the floor) in its piece.
+      const bool mostly_hanging = 2 * a.hanging > static_cast<std::int64_t>(a.tops.size());
+      const std::int64_t bottom = mostly_hanging ? a.hanging_bottom : a.bottom;
+      o.on_floor = bottom <= floor_layer + 2;
+      o.z_min_m = o.on_floor ? voxels.layer_center_m(floor_layer) : voxels.layer_bottom_m(bottom);
       if (o.z_min_m - layers.floor_z_m >= params.hanging_min_clearance_m)
         o.kind = ObjectKind::kHanging;
       // The top is a high percentile of the cells' tops, not their maximum: a strip of cells on
@@ -304,7 +327,7 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
       heights.bottom.data[i] = static_cast<float>(voxels.layer_bottom_m(scan.cols.data[i].bottom));
   const Labels lab = join_fragments(label_objects(mask, top, geo, params, scan.any_data), heights,
                                     geo.cell_m(), params);
-  const std::vector<Acc> acc = accumulate(lab, scan.cols, layout, voxels, layers);
+  const std::vector<Acc> acc = accumulate(lab, scan.cols, layout, voxels, layers, params);
   list_objects(acc, lab, geo, voxels, layers, params, res);
   res.left_over_pieces = lab.count - static_cast<std::int64_t>(res.objects.size());
   for (std::size_t i = 0; i < layout.size(); ++i)
