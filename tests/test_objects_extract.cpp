@@ -260,14 +260,17 @@ TEST(Objects, NoFurnitureIsAnEmptyListAndSmallObjectsAreDropped) {
 TEST(Objects, FreeStandingWallComponentsArePillars) {
   // A room with walls all round (the outer ring: large, unknown outside), a round pillar seen
   // from one side (a half ring of wall cells, radius 5 cells) and a square pillar seen on two
-  // faces (an L), both up to the ceiling; and the front of a tall shelf that reaches into the
-  // wall band but ends below its top: not a pillar.
+  // faces (an L), both up to the ceiling; the front of a tall shelf that reaches into the
+  // wall band but ends below its top, and a lamp hanging in the wall band up to the ceiling's
+  // smear, nothing under it in the furniture band: not pillars.
   const int n = 70;
   Grid<Cell> L(n, n, Cell::kUnknown);
   auto g = voxels(n, n, 54);
   cloud::LayerAnalysis layers = flat_layers();
   layers.wall_band.lo_layer = 40;  // 2.0 - 2.5 m
   layers.wall_band.hi_layer = 49;
+  layers.furniture_band.lo_layer = 2;
+  layers.furniture_band.hi_layer = 39;
   layers.ceiling_layer = 52;
   layers.ceiling_z_m = 2.625;
   for (int r = 2; r < n - 2; ++r)
@@ -291,6 +294,11 @@ TEST(Objects, FreeStandingWallComponentsArePillars) {
       fill_column(g, c, r, 0.0, 2.6);
     }
   }
+  for (int r = 58; r <= 63; ++r)  // the lamp, 2.2 m up to the smear at 2.5 m
+    for (int c = 15; c <= 22; ++c) {
+      L.at(c, r) = Cell::kWall;
+      fill_column(g, c, r, 2.2, 2.5);
+    }
   for (int c = 40; c <= 55; ++c) {  // the shelf front, up to 2.2 m
     L.at(c, 50) = Cell::kWall;
     fill_column(g, c, 50, 0.0, 2.2);

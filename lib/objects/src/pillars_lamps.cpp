@@ -116,6 +116,19 @@ void add_pillars(const Grid<Cell>& layout, const GridGeometry& geo, const cloud:
           break;
         }
     if (2 * reach_top < cells.size()) continue;
+    // ... and it stands on the floor: most of its columns hold points in the furniture band too
+    // (above a desk in front of it, at least). A lamp hanging in the wall band, seen under the
+    // ceiling's smear, has nothing there.
+    std::size_t in_band = 0;
+    const std::int64_t band_lo = std::max<std::int64_t>(layers.furniture_band.lo_layer, 0),
+                       band_hi = std::min(layers.furniture_band.hi_layer, voxels.nz - 1);
+    for (const auto& c : cells)
+      for (std::int64_t z = band_lo; z <= band_hi; ++z)
+        if (voxels.count(c.col, c.row, z)) {
+          ++in_band;
+          break;
+        }
+    if (band_hi >= band_lo && 2 * in_band < cells.size()) continue;
 
     FurnitureObject o;
     o.id = static_cast<int>(res.objects.size()) + 1;
