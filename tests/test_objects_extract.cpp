@@ -452,6 +452,17 @@ TEST(ObjectParams, ValidatedByExtractObjects) {
   ObjectParams bad;
   bad.top_percentile = 101;
   EXPECT_THROW(validate(bad), UsageError);
+  for (auto set : {+[](ObjectParams& q) { q.neck_width_m = -0.1; },
+                   +[](ObjectParams& q) { q.neck_min_part_m2 = 0.0; }}) {
+    ObjectParams q;
+    set(q);
+    try {
+      validate(q);
+      ADD_FAILURE() << "expected UsageError";
+    } catch (const UsageError& e) {
+      EXPECT_NE(std::string(e.what()).find("objects.neck_"), std::string::npos) << e.what();
+    }
+  }
   const Grid<Cell> layout(2, 2, Cell::kFree);
   const GridGeometry geo({0.0, 0.0}, 0.1, 2, 2);
   EXPECT_THROW(extract_objects(layout, geo, cloud::VoxelGrid{}, cloud::LayerAnalysis{}, bad),

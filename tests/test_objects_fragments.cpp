@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-
 #include <random>
 
 #include "indoormap/objects/objects.hpp"
@@ -248,4 +247,39 @@ TEST(ObjectFragments, ACabinetUnderAWindowIsAnObject) {
   const auto res = extract_objects(L, geo, g, flat_layers(), {});
   ASSERT_EQ(res.objects.size(), 1u);
   EXPECT_EQ(res.objects[0].cells, 24 * 11);
+}
+
+TEST(Objects, PiecesJoinedByANeckWithoutAFaceAreSplit) {
+  // Two shelves 40 x 8 cells along a wall, joined across cols 23-26 by a neck two cells deep
+  // (rows 20-21). Two pieces of furniture a gap apart: the neck's cells hold no surface (mixed
+  // pixels, a pocket), so each shelf is its own object. One shelf with a notch behind its front
+  // face: the face (row 20) runs on across the neck, so it stays one object. With neck_width_m
+  // 0 nothing is split.
+  auto scene = [](bool face_across) {
+    const int w = 60, h = 40;
+    Grid<Cell> L = walled_room(w, h);
+    auto g = voxels(w, h, 50);
+    block(L, g, 5, 44, 20, 27, 1.8);
+    for (int r = 20; r <= 27; ++r)
+      for (int c = 23; c <= 26; ++c) {
+        for (std::int64_t z = 0; z < g.nz; ++z) g.counts[(z * g.ny + r) * g.nx + c] = 0;
+        if (r >= 22)
+          L.at(c, r) = Cell::kFree;
+        else if (face_across)
+          fill_column(g, c, r, 0.0, 1.8);
+      }
+    return std::pair{L, g};
+  };
+  ObjectParams p;
+  const GridGeometry geo({0.0, 0.0}, 0.05, 60, 40);
+  const auto [gap_L, gap_g] = scene(false);
+  const auto two = extract_objects(gap_L, geo, gap_g, flat_layers(), p);
+  ASSERT_EQ(two.objects.size(), 2u);
+  EXPECT_NE(two.labels.at(10, 24), two.labels.at(40, 24));
+  EXPECT_EQ(two.objects[0].cells + two.objects[1].cells, 2 * 18 * 8 + 4 * 2);
+  for (const auto& o : two.objects) EXPECT_NEAR(o.z_max_m, 1.775, 0.051);
+  const auto [notch_L, notch_g] = scene(true);
+  EXPECT_EQ(extract_objects(notch_L, geo, notch_g, flat_layers(), p).objects.size(), 1u);
+  p.neck_width_m = 0.0;
+  EXPECT_EQ(extract_objects(gap_L, geo, gap_g, flat_layers(), p).objects.size(), 1u);
 }

@@ -105,6 +105,8 @@ void visit(PipelineConfig& c, F&& f) {
   auto& ob = c.objects;
   f("objects", "min_area_m2", ob.min_area_m2);
   f("objects", "join_gap_m", ob.join_gap_m);
+  f("objects", "neck_width_m", ob.neck_width_m);
+  f("objects", "neck_min_part_m2", ob.neck_min_part_m2);
   f("objects", "min_seen_area_m2", ob.min_seen_area_m2);
   f("objects", "connectivity", ob.connectivity);
   f("objects", "crop_margin_m", ob.crop_margin_m);

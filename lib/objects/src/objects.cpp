@@ -325,8 +325,13 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
   for (std::size_t i = 0; i < mask.size(); ++i)
     if (mask.data[i] && scan.cols.data[i].bottom >= 0)
       heights.bottom.data[i] = static_cast<float>(voxels.layer_bottom_m(scan.cols.data[i].bottom));
-  const Labels lab = join_fragments(label_objects(mask, top, geo, params, scan.any_data), heights,
-                                    geo.cell_m(), params);
+  Grid<std::uint8_t> solid(w, h, 0);  // cells with more than a stray return
+  for (std::size_t i = 0; i < solid.size(); ++i)
+    solid.data[i] = scan.cols.data[i].top >= 0 && scan.cols.data[i].points > kStrayMaxPoints;
+  const Labels lab =
+      split_at_necks(join_fragments(label_objects(mask, top, geo, params, scan.any_data), heights,
+                                    geo.cell_m(), params),
+                     solid, geo.cell_m(), params);
   const std::vector<Acc> acc = accumulate(lab, scan.cols, layout, voxels, layers, params);
   list_objects(acc, lab, geo, voxels, layers, params, res);
   res.left_over_pieces = lab.count - static_cast<std::int64_t>(res.objects.size());

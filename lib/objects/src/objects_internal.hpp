@@ -107,6 +107,15 @@ constexpr double kRestMinClearance_m = 0.15;
 Labels join_fragments(const Labels& in, const PieceHeights& heights, double cell_m,
                       const ObjectParams& params);
 
+/// Splits every object whose cells form two or more cores joined by necks narrower than
+/// params.neck_width_m (two shelves end to end, bridged by a few cells between their front
+/// corners; a chair touching a table): the cores are the components of the object's geometric
+/// parts opened by a disc neck_width_m across that hold at least params.neck_min_part_m2, and
+/// every cell goes to the core nearest to it inside the part. Pieces joined across a gap
+/// (join_fragments) are not split again. Numbered in raster order.
+Labels split_at_necks(const Labels& in, const Grid<std::uint8_t>& solid, double cell_m,
+                      const ObjectParams& params);
+
 OrientedBox min_area_box(const std::vector<Eigen::Vector2d>& pts);
 
 // The four corners of a cell (map metres), for minimum-area rectangles of cell sets.

@@ -9,6 +9,9 @@ void validate(const ObjectParams& ob) {
   };
   require(ob.min_area_m2 >= 0, "objects.min_area_m2: must be >= 0");
   require(ob.join_gap_m >= 0 && ob.join_gap_m <= 1, "objects.join_gap_m: must be in [0, 1]");
+  require(ob.neck_width_m >= 0 && ob.neck_width_m <= 2, "objects.neck_width_m: must be in [0, 2]");
+  require(ob.neck_min_part_m2 > 0 && ob.neck_min_part_m2 <= 100,
+          "objects.neck_min_part_m2: must be in (0, 100]");
   require(ob.min_seen_area_m2 >= 0, "objects.min_seen_area_m2: must be >= 0");
   require(ob.crop_margin_m >= 0 && ob.crop_margin_m <= 10,
           "objects.crop_margin_m: must be in [0, 10]");

@@ -25,6 +25,11 @@ struct ObjectParams {
   /// differ by at most split_height_step_m are one object (a shadow or a missed row of samples cut
   /// it); a piece still below min_area_m2 joins the largest object within this gap. 0: no joining.
   double join_gap_m = 0.05;
+  /// Objects whose cells form cores joined by a neck narrower than this are split, when each
+  /// core holds at least neck_min_part_m2 (two shelves end to end bridged between their corners,
+  /// a chair touching a table). 0: no splitting.
+  double neck_width_m = 0.25;
+  double neck_min_part_m2 = 0.2;
   /// An object needs this much seen area (seen_cells): less is a pocket the layout filled along a
   /// wall, or a wall's face, with a few stray points, not furniture (it is left over).
   /// 0.04: the smallest simulated bin (0.045 m2) is lower than the scanner, so its whole top is
