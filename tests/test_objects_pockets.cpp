@@ -211,3 +211,22 @@ TEST(Objects, ALowRoomsCeilingOverAShelfIsNoPartOfIt) {
   EXPECT_EQ(furniture[1].cells, 16 * 8);
   EXPECT_NEAR(furniture[1].z_max_m, 1.8, 0.051);
 }
+
+TEST(Objects, StrayReturnsNearerATallCabinetThanTheBinStillLeave) {
+  // The bin's shadow ends at a tall cabinet (columns 28-29, 1.9 m, above the scanner), and the
+  // single returns in the shadow (column 27) lie nearer the cabinet than the bin. The scanner
+  // cannot have seen the cabinet's top carried over them, but its ray passed over the bin's top,
+  // the lowest surface within 0.25 m: they leave the object, and the bin stays alone.
+  BinWithShadow t;
+  for (int r = 3; r <= 6; ++r)
+    for (int c = 28; c <= 29; ++c) fill_column(t.grid, c, r, 0.0, 1.9);
+  fill_column(t.grid, 27, 4, 0.2, 0.25, 1);
+  fill_column(t.grid, 27, 5, 0.2, 0.25, 1);
+  const auto res = t.extract();
+  ASSERT_GE(res.objects.size(), 2u);
+  EXPECT_EQ(res.objects[0].cells, 16);  // the bin alone
+  EXPECT_EQ(res.objects[0].max_cell.col, 23);
+  EXPECT_EQ(res.labels.at(24, 4), 0);
+  EXPECT_NE(res.labels.at(28, 4), res.labels.at(21, 4));
+  EXPECT_NE(res.labels.at(27, 4), res.labels.at(21, 4));
+}

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <opencv2/imgproc.hpp>
 
 #include "objects_internal.hpp"
@@ -205,6 +206,9 @@ bool seen_by_a_scanner(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
 // the ray that left them passed under the top's level, so the object does not reach them (a
 // mixed pixel in the shadow behind a bin would otherwise join the shadow to the bin). They leave
 // the mask and become cells without data.
+constexpr std::int64_t kSampleBandLayers = 3;  // 0.15 m on 5 cm layers: one top, sampled
+constexpr int kStrayReachCells = 4;            // 0.2 m on 5 cm cells: a bin's shadow up to the wall
+
 void drop_stray_below_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
                            const Grid<Column>& cols,
                            const std::vector<Eigen::Vector3d>& scanners_map, cv::Mat& no_data,
@@ -226,13 +230,60 @@ void drop_stray_below_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxe
     for (int c = 0; c < w; ++c) {
       const Column& own = cols.at(c, r);
       if (!mask.at(c, r) || own.top < 0 || own.points > kStrayMaxPoints) continue;
-      const std::int64_t carried = cols.at(surface.at(c, r)).top;
-      if (own.top > carried - kStrayBelowTopLayers) continue;
-      if (!seen_by_a_scanner(geo, voxels, scanners_map, top_target(geo, voxels, c, r, carried)))
-        continue;
+      // The nearest surface's top, and the lowest surface top within kStrayReachCells: a stray
+      // between a bin and the cabinet behind it is nearer to the cabinet, while its ray passed
+      // over the bin.
+      const std::int64_t nearest_top = cols.at(surface.at(c, r)).top;
+      std::int64_t lowest_top = nearest_top;
+      for (int dr = -kStrayReachCells; dr <= kStrayReachCells; ++dr)
+        for (int dc = -kStrayReachCells; dc <= kStrayReachCells; ++dc)
+          if (mask.contains(c + dc, r + dr) && mask.at(c + dc, r + dr) &&
+              !no_surface.at<std::uint8_t>(r + dr, c + dc))
+            lowest_top = std::min(lowest_top, cols.at(c + dc, r + dr).top);
+      bool below_a_seen_top = false;
+      for (const std::int64_t carried : {nearest_top, lowest_top})
+        below_a_seen_top =
+            below_a_seen_top ||
+            (own.top <= carried - kStrayBelowTopLayers &&
+             seen_by_a_scanner(geo, voxels, scanners_map, top_target(geo, voxels, c, r, carried)));
+      if (!below_a_seen_top) continue;
       mask.at(c, r) = 0;
       no_data.at<std::uint8_t>(r, c) = 1;
     }
+}
+
+// Pocket cells in a gap of a few cells between data cells of about one height (tops in the
+// nearest data cell's band of kSampleBandLayers layers or a neighbouring one): missed samples of
+// one top
+// (seen at a grazing angle), not evidence of an empty cell. A gap between a bin's top and a
+// cabinet behind it is no such gap: the pocket rule decides there.
+cv::Mat between_samples(const Grid<Column>& cols, const cv::Mat& no_data,
+                        const Grid<CellIndex>& nearest) {
+  const int w = no_data.cols, h = no_data.rows;
+  auto band = [](std::int64_t top) { return top / kSampleBandLayers; };
+  std::map<std::int64_t, cv::Rect> bands;  // the data cells of each band, bounded
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c)
+      if (!no_data.at<std::uint8_t>(r, c)) bands[band(cols.at(c, r).top)] |= cv::Rect(c, r, 1, 1);
+  cv::Mat out(h, w, CV_8U, cv::Scalar(0));
+  const cv::Rect all(0, 0, w, h);
+  for (const auto& [k, box] : bands) {
+    // The closing reaches 2 cells beyond the data; its work stays inside the band's box.
+    const cv::Rect roi = cv::Rect(box.x - 3, box.y - 3, box.width + 6, box.height + 6) & all;
+    cv::Mat data_k(roi.size(), CV_8U, cv::Scalar(0)), closed;
+    for (int r = roi.y; r < roi.y + roi.height; ++r)
+      for (int c = roi.x; c < roi.x + roi.width; ++c)
+        if (!no_data.at<std::uint8_t>(r, c) && std::abs(band(cols.at(c, r).top) - k) <= 1)
+          data_k.at<std::uint8_t>(r - roi.y, c - roi.x) = 1;
+    cv::morphologyEx(data_k, closed, cv::MORPH_CLOSE,
+                     cv::getStructuringElement(cv::MORPH_RECT, {3, 3}), {-1, -1}, 2);
+    for (int r = roi.y; r < roi.y + roi.height; ++r)
+      for (int c = roi.x; c < roi.x + roi.width; ++c)
+        if (closed.at<std::uint8_t>(r - roi.y, c - roi.x) &&
+            band(cols.at(nearest.at(c, r)).top) == k)
+          out.at<std::uint8_t>(r, c) = 1;
+  }
+  return out;
 }
 
 }  // namespace
@@ -249,11 +300,7 @@ Grid<float> fill_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
   Grid<float> top(w, h, kNoHeight);
   if (any_data) {
     const Grid<CellIndex> nearest = nearest_data(no_data);
-    // Gaps of a few cells between data cells are missed samples (a top seen at a grazing angle),
-    // not evidence of an empty cell.
-    cv::Mat near_data;
-    cv::morphologyEx(no_data == 0, near_data, cv::MORPH_CLOSE,
-                     cv::getStructuringElement(cv::MORPH_RECT, {3, 3}), {-1, -1}, 2);
+    const cv::Mat near_data = between_samples(cols, no_data, nearest);
     for (int r = 0; r < h; ++r)
       for (int c = 0; c < w; ++c)
         if (mask.at(c, r)) {
