@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 #include "indoormap/core/errors.hpp"
 #include "indoormap/core/parallel.hpp"
@@ -14,32 +15,45 @@ namespace indoormap::cloud {
 namespace {
 
 // A histogram of one axis in bins of `bin` metres, bin `half` starting at `origin` (a sample's
-// median), over kMaxExtent metres either side: bounded memory whatever the data.
+// median), over kMaxExtent metres either side: bounded memory whatever the data. Each bin keeps
+// its points' extremes, so the main body's exact extent needs no second pass over the points.
 struct AxisHistogram {
   static constexpr double kMaxExtent = 5000.0;  // metres; far beyond any building
-  double origin = 0.0, bin = 1.0;
+  float origin = 0.0f, inv_bin = 1.0f;
   std::int64_t half = 0;
   std::vector<std::uint64_t> count;
+  std::vector<float> lo, hi;
 
   AxisHistogram() = default;
   AxisHistogram(double origin_m, double bin_m)
-      : origin(origin_m),
-        bin(bin_m),
+      : origin(static_cast<float>(origin_m)),
+        inv_bin(static_cast<float>(1.0 / bin_m)),
         half(static_cast<std::int64_t>(std::ceil(kMaxExtent / bin_m))),
-        count(static_cast<std::size_t>(2 * half + 1), 0) {}
+        count(static_cast<std::size_t>(2 * half + 1), 0),
+        lo(count.size(), std::numeric_limits<float>::infinity()),
+        hi(count.size(), -std::numeric_limits<float>::infinity()) {}
   void add(float x) {
-    const double k = std::floor((x - origin) / bin);  // NaN fails both tests below
-    if (k >= -half && k <= half) ++count[static_cast<std::size_t>(k + half)];
+    const float t = (x - origin) * inv_bin + static_cast<float>(half);
+    if (!(t >= 0.0f && t < static_cast<float>(count.size()))) return;  // NaN fails too
+    const auto k = static_cast<std::size_t>(t);
+    ++count[k];
+    lo[k] = std::min(lo[k], x);
+    hi[k] = std::max(hi[k], x);
   }
   void merge(const AxisHistogram& o) {
-    for (std::size_t i = 0; i < count.size(); ++i) count[i] += o.count[i];
+    for (std::size_t i = 0; i < count.size(); ++i) {
+      count[i] += o.count[i];
+      lo[i] = std::min(lo[i], o.lo[i]);
+      hi[i] = std::max(hi[i], o.hi[i]);
+    }
   }
 };
 
 // The main body of the data along one axis: from the origin outward until an empty gap of at
-// least two bins. Walking a histogram of every point (not a sample) keeps a far wall that holds
-// few points (a corridor's end 20 m from its scanner) while a gap still cuts off what lies beyond.
-std::pair<double, double> main_body(const AxisHistogram& h) {
+// least two bins; its exact extent (the extremes of its outermost bins). Walking a histogram of
+// every point (not a sample) keeps a far wall that holds few points (a corridor's end 20 m from
+// its scanner) while a gap still cuts off what lies beyond. Requires a non-empty median bin.
+std::pair<float, float> main_body(const AxisHistogram& h) {
   auto walk = [&](std::int64_t step) {
     std::int64_t k = h.half, last = h.half;
     int empty = 0;
@@ -52,11 +66,9 @@ std::pair<double, double> main_body(const AxisHistogram& h) {
         ++empty;
       }
     }
-    return last;
+    return static_cast<std::size_t>(last);
   };
-  const std::int64_t lo = walk(-1), hi = walk(+1);
-  return {h.origin + static_cast<double>(lo - h.half) * h.bin,
-          h.origin + static_cast<double>(hi - h.half + 1) * h.bin};
+  return {h.lo[walk(-1)], h.hi[walk(+1)]};
 }
 
 double sample_median(std::vector<float>& v) {
@@ -130,48 +142,8 @@ Bounds3 robust_bounds(const std::vector<Eigen::Vector3f>& points, const VoxelPar
   for (std::size_t k = 1; k < hists.size(); ++k)
     for (int d = 0; d < 3; ++d) hists[0][d].merge(hists[k][d]);
   Bounds3 b;
-  b.lo_m.setConstant(std::numeric_limits<double>::infinity());
-  b.hi_m.setConstant(-std::numeric_limits<double>::infinity());
-  Eigen::Vector3f lo, hi;
-  for (int d = 0; d < 3; ++d) {
-    const auto [l, h] = main_body(hists[0][d]);
-    lo[d] = static_cast<float>(l);
-    hi[d] = static_cast<float>(h);
-  }
-  const float lx = lo.x(), ly = lo.y(), lz = lo.z(), hx = hi.x(), hy = hi.y(), hz = hi.z();
-  struct Part {
-    float mnx, mny, mnz, mxx, mxy, mxz;
-    bool any = false;
-  };
-  // The exact bounds of the points inside the main body; the points are split between the cores.
-  const auto parts = parallel_parts(points.size(), 1 << 20, [&](std::size_t i0, std::size_t i1) {
-    Part r{hx, hy, hz, lx, ly, lz};
-    for (std::size_t i = i0; i < i1; ++i) {
-      const float x = points[i].x(), y = points[i].y(), z = points[i].z();
-      if (!(x >= lx && x <= hx && y >= ly && y <= hy && z >= lz && z <= hz)) continue;
-      r.any = true;
-      r.mnx = std::min(r.mnx, x);
-      r.mny = std::min(r.mny, y);
-      r.mnz = std::min(r.mnz, z);
-      r.mxx = std::max(r.mxx, x);
-      r.mxy = std::max(r.mxy, y);
-      r.mxz = std::max(r.mxz, z);
-    }
-    return r;
-  });
-  Part all{hx, hy, hz, lx, ly, lz};
-  for (const Part& r : parts) {
-    if (!r.any) continue;
-    all = {std::min(all.mnx, r.mnx),
-           std::min(all.mny, r.mny),
-           std::min(all.mnz, r.mnz),
-           std::max(all.mxx, r.mxx),
-           std::max(all.mxy, r.mxy),
-           std::max(all.mxz, r.mxz),
-           true};
-  }
-  if (!all.any) return b;  // infinite bounds: voxelize reports "no points inside"
-  const Eigen::Vector3f mn(all.mnx, all.mny, all.mnz), mx(all.mxx, all.mxy, all.mxz);
+  Eigen::Vector3f mn, mx;
+  for (int d = 0; d < 3; ++d) std::tie(mn[d], mx[d]) = main_body(hists[0][d]);
   b.lo_m = mn.cast<double>();
   b.hi_m = mx.cast<double>();
   return b;
