@@ -15,47 +15,37 @@ namespace indoormap::cloud {
 namespace {
 
 // A histogram of one axis in bins of `bin` metres, bin `half` starting at `origin` (a sample's
-// median), over kMaxExtent metres either side: bounded memory whatever the data. Each bin keeps
-// its points' extremes, so the main body's exact extent needs no second pass over the points.
+// median), over kMaxExtent metres either side: bounded memory whatever the data.
 struct AxisHistogram {
   static constexpr double kMaxExtent = 5000.0;  // metres; far beyond any building
   float origin = 0.0f, inv_bin = 1.0f;
   std::int64_t half = 0;
   std::vector<std::uint64_t> count;
-  std::vector<float> lo, hi;
 
   AxisHistogram() = default;
   AxisHistogram(double origin_m, double bin_m)
       : origin(static_cast<float>(origin_m)),
         inv_bin(static_cast<float>(1.0 / bin_m)),
         half(static_cast<std::int64_t>(std::ceil(kMaxExtent / bin_m))),
-        count(static_cast<std::size_t>(2 * half + 1), 0),
-        lo(count.size(), std::numeric_limits<float>::infinity()),
-        hi(count.size(), -std::numeric_limits<float>::infinity()) {}
+        count(static_cast<std::size_t>(2 * half + 1), 0) {}
   void add(float x) {
     const float t = (x - origin) * inv_bin + static_cast<float>(half);
     if (!(t >= 0.0f && t < static_cast<float>(count.size()))) return;  // NaN fails too
     const auto k = static_cast<std::size_t>(t);
     ++count[k];
-    lo[k] = std::min(lo[k], x);
-    hi[k] = std::max(hi[k], x);
   }
   void merge(const AxisHistogram& o) {
-    for (std::size_t i = 0; i < count.size(); ++i) {
-      count[i] += o.count[i];
-      lo[i] = std::min(lo[i], o.lo[i]);
-      hi[i] = std::max(hi[i], o.hi[i]);
-    }
+    for (std::size_t i = 0; i < count.size(); ++i) count[i] += o.count[i];
   }
+  float bin_start(std::int64_t k) const { return origin + static_cast<float>(k - half) / inv_bin; }
 };
 
-// The main body of the data along one axis: from the origin outward until an empty gap of at
-// least two bins; its exact extent (the extremes of its outermost bins). Walking a histogram of
-// every point (not a sample) keeps a far wall that holds few points (a corridor's end 20 m from
-// its scanner) while a gap still cuts off what lies beyond. Requires a non-empty median bin.
-std::pair<float, float> main_body(const AxisHistogram& h) {
-  auto walk = [&](std::int64_t step) {
-    std::int64_t k = h.half, last = h.half;
+// The bins of the main body of the data along one axis: from `from` (bins known to hold data)
+// outward until an empty gap of at least two bins.
+std::pair<std::int64_t, std::int64_t> main_body(const AxisHistogram& h, std::int64_t from_lo,
+                                                std::int64_t from_hi) {
+  auto walk = [&](std::int64_t k, std::int64_t step) {
+    std::int64_t last = k;
     int empty = 0;
     while (k + step >= 0 && k + step <= 2 * h.half && empty < 2) {
       k += step;
@@ -66,10 +56,17 @@ std::pair<float, float> main_body(const AxisHistogram& h) {
         ++empty;
       }
     }
-    return static_cast<std::size_t>(last);
+    return last;
   };
-  return {h.lo[walk(-1)], h.hi[walk(+1)]};
+  return {walk(from_lo, -1), walk(from_hi, +1)};
 }
+
+// Per axis: a histogram of the points outside the sample's main body (the core); most points
+// fall in the core and cost two comparisons.
+struct AxisPass {
+  float core_lo = 0.0f, core_hi = 0.0f;  // [core_lo, core_hi): the core's values
+  AxisHistogram outside;
+};
 
 double sample_median(std::vector<float>& v) {
   const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
@@ -128,22 +125,72 @@ Bounds3 robust_bounds(const std::vector<Eigen::Vector3f>& points, const VoxelPar
   }
   if (axis[0].empty()) throw InputError("", "the cloud has no finite points");
 
-  // The sample only places the histograms; the main body comes from every point.
+  // The sample's main body (the core) has no gap in the whole cloud either; beyond it, the
+  // walk goes on over a histogram of every point, so a far wall with few points (a corridor's end
+  // 20 m from its scanner, missed by the sample) stays while a gap still cuts off what lies
+  // beyond.
   const double bin = params.bounds_gap_m / 2.0;
-  std::array<AxisHistogram, 3> proto{AxisHistogram(sample_median(axis[0]), bin),
-                                     AxisHistogram(sample_median(axis[1]), bin),
-                                     AxisHistogram(sample_median(axis[2]), bin)};
-  auto hists = parallel_parts(points.size(), 1 << 20, [&](std::size_t i0, std::size_t i1) {
-    std::array<AxisHistogram, 3> h = proto;
+  std::array<AxisPass, 3> proto;
+  std::array<std::pair<std::int64_t, std::int64_t>, 3> core;
+  for (int d = 0; d < 3; ++d) {
+    AxisHistogram sample(sample_median(axis[d]), bin);
+    for (float x : axis[d]) sample.add(x);
+    core[d] = main_body(sample, sample.half, sample.half);
+    proto[d].core_lo = sample.bin_start(core[d].first);
+    proto[d].core_hi = sample.bin_start(core[d].second + 1);
+    proto[d].outside = AxisHistogram(sample.origin, bin);
+  }
+  auto passes = parallel_parts(points.size(), 1 << 20, [&](std::size_t i0, std::size_t i1) {
+    std::array<AxisPass, 3> a = proto;
     for (std::size_t i = i0; i < i1; ++i)
-      for (int d = 0; d < 3; ++d) h[d].add(points[i][d]);
-    return h;
+      for (int d = 0; d < 3; ++d) {
+        const float x = points[i][d];
+        if (!(x >= a[d].core_lo && x < a[d].core_hi)) a[d].outside.add(x);
+      }
+    return a;
   });
-  for (std::size_t k = 1; k < hists.size(); ++k)
-    for (int d = 0; d < 3; ++d) hists[0][d].merge(hists[k][d]);
+  float box_lo[3], box_hi[3];  // the main body's bins, per axis
+  for (int d = 0; d < 3; ++d) {
+    AxisHistogram& h = passes[0][d].outside;
+    for (std::size_t k = 1; k < passes.size(); ++k) h.merge(passes[k][d].outside);
+    for (std::int64_t k = core[d].first; k <= core[d].second; ++k)  // the core holds data
+      h.count[static_cast<std::size_t>(k)] += 1;
+    const auto [k0, k1] = main_body(h, core[d].first, core[d].second);
+    box_lo[d] = std::min(h.bin_start(k0), proto[d].core_lo);
+    box_hi[d] = std::max(h.bin_start(k1 + 1), proto[d].core_hi);
+  }
+  // The exact extent of the points inside the main body's box (on every axis at once: a point
+  // seen through a window far above the room does not widen the room's x range).
+  struct Part {
+    Eigen::Vector3f mn, mx;
+    bool any = false;
+  };
+  const auto parts = parallel_parts(points.size(), 1 << 20, [&](std::size_t i0, std::size_t i1) {
+    Part r{Eigen::Vector3f::Constant(std::numeric_limits<float>::infinity()),
+           Eigen::Vector3f::Constant(-std::numeric_limits<float>::infinity())};
+    for (std::size_t i = i0; i < i1; ++i) {
+      const float x = points[i].x(), y = points[i].y(), z = points[i].z();
+      if (!(x >= box_lo[0] && x <= box_hi[0] && y >= box_lo[1] && y <= box_hi[1] &&
+            z >= box_lo[2] && z <= box_hi[2]))
+        continue;
+      r.any = true;
+      r.mn = r.mn.cwiseMin(points[i]);
+      r.mx = r.mx.cwiseMax(points[i]);
+    }
+    return r;
+  });
   Bounds3 b;
-  Eigen::Vector3f mn, mx;
-  for (int d = 0; d < 3; ++d) std::tie(mn[d], mx[d]) = main_body(hists[0][d]);
+  b.lo_m.setConstant(std::numeric_limits<double>::infinity());
+  b.hi_m.setConstant(-std::numeric_limits<double>::infinity());
+  Eigen::Vector3f mn = Eigen::Vector3f::Constant(std::numeric_limits<float>::infinity()), mx = -mn;
+  bool any = false;
+  for (const Part& r : parts) {
+    if (!r.any) continue;
+    any = true;
+    mn = mn.cwiseMin(r.mn);
+    mx = mx.cwiseMax(r.mx);
+  }
+  if (!any) return b;  // infinite bounds: voxelize reports "no points inside"
   b.lo_m = mn.cast<double>();
   b.hi_m = mx.cast<double>();
   return b;
