@@ -258,18 +258,21 @@ void drop_stray_below_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxe
 // (seen at a grazing angle), not evidence of an empty cell. A gap between a bin's top and a
 // cabinet behind it is no such gap: the pocket rule decides there.
 cv::Mat between_samples(const Grid<Column>& cols, const cv::Mat& no_data,
-                        const Grid<CellIndex>& nearest) {
+                        const Grid<CellIndex>& nearest, const Grid<std::uint8_t>& pocket,
+                        const Grid<std::uint8_t>& mask) {
   const int w = no_data.cols, h = no_data.rows;
   auto band = [](std::int64_t top) { return top / kSampleBandLayers; };
-  std::map<std::int64_t, cv::Rect> bands;  // the data cells of each band, bounded
+  // Only the pocket cells of the mask are asked about: per band of their nearest data cell, the
+  // box around them, wide enough (5 cells) for the closing there to be the whole grid's.
+  std::map<std::int64_t, cv::Rect> bands;
   for (int r = 0; r < h; ++r)
     for (int c = 0; c < w; ++c)
-      if (!no_data.at<std::uint8_t>(r, c)) bands[band(cols.at(c, r).top)] |= cv::Rect(c, r, 1, 1);
+      if (mask.at(c, r) && pocket.at(c, r))
+        bands[band(cols.at(nearest.at(c, r)).top)] |= cv::Rect(c, r, 1, 1);
   cv::Mat out(h, w, CV_8U, cv::Scalar(0));
   const cv::Rect all(0, 0, w, h);
   for (const auto& [k, box] : bands) {
-    // The closing reaches 2 cells beyond the data; its work stays inside the band's box.
-    const cv::Rect roi = cv::Rect(box.x - 3, box.y - 3, box.width + 6, box.height + 6) & all;
+    const cv::Rect roi = cv::Rect(box.x - 5, box.y - 5, box.width + 10, box.height + 10) & all;
     cv::Mat data_k(roi.size(), CV_8U, cv::Scalar(0)), closed;
     for (int r = roi.y; r < roi.y + roi.height; ++r)
       for (int c = roi.x; c < roi.x + roi.width; ++c)
@@ -277,8 +280,8 @@ cv::Mat between_samples(const Grid<Column>& cols, const cv::Mat& no_data,
           data_k.at<std::uint8_t>(r - roi.y, c - roi.x) = 1;
     cv::morphologyEx(data_k, closed, cv::MORPH_CLOSE,
                      cv::getStructuringElement(cv::MORPH_RECT, {3, 3}), {-1, -1}, 2);
-    for (int r = roi.y; r < roi.y + roi.height; ++r)
-      for (int c = roi.x; c < roi.x + roi.width; ++c)
+    for (int r = box.y; r < box.y + box.height; ++r)
+      for (int c = box.x; c < box.x + box.width; ++c)
         if (closed.at<std::uint8_t>(r - roi.y, c - roi.x) &&
             band(cols.at(nearest.at(c, r)).top) == k)
           out.at<std::uint8_t>(r, c) = 1;
@@ -300,7 +303,7 @@ Grid<float> fill_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
   Grid<float> top(w, h, kNoHeight);
   if (any_data) {
     const Grid<CellIndex> nearest = nearest_data(no_data);
-    const cv::Mat near_data = between_samples(cols, no_data, nearest);
+    const cv::Mat near_data = between_samples(cols, no_data, nearest, pocket, mask);
     for (int r = 0; r < h; ++r)
       for (int c = 0; c < w; ++c)
         if (mask.at(c, r)) {
