@@ -140,45 +140,68 @@ Bounds3 robust_bounds(const std::vector<Eigen::Vector3f>& points, const VoxelPar
     proto[d].core_hi = sample.bin_start(core[d].second + 1);
     proto[d].outside = AxisHistogram(sample.origin, bin);
   }
+  // One pass: the extent of the points inside the core's box, and the histograms of the
+  // coordinates outside it. Usually the walk below ends at the core, and that extent is the
+  // answer; when it goes on (a far wall the sample missed), a second pass takes the extent of
+  // the points inside the larger box.
+  struct Part {
+    Eigen::Vector3f mn = Eigen::Vector3f::Constant(std::numeric_limits<float>::infinity()),
+                    mx = -mn;
+    bool any = false;
+  };
+  struct FirstPass {
+    std::array<AxisPass, 3> axes;
+    Part core_extent;
+  };
   auto passes = parallel_parts(points.size(), 1 << 20, [&](std::size_t i0, std::size_t i1) {
-    std::array<AxisPass, 3> a = proto;
-    for (std::size_t i = i0; i < i1; ++i)
+    FirstPass f{proto, {}};
+    for (std::size_t i = i0; i < i1; ++i) {
+      bool in_core = true;
       for (int d = 0; d < 3; ++d) {
         const float x = points[i][d];
-        if (!(x >= a[d].core_lo && x < a[d].core_hi)) a[d].outside.add(x);
+        if (x >= f.axes[d].core_lo && x <= f.axes[d].core_hi) continue;
+        f.axes[d].outside.add(x);
+        in_core = false;
       }
-    return a;
+      if (!in_core) continue;
+      f.core_extent.any = true;
+      f.core_extent.mn = f.core_extent.mn.cwiseMin(points[i]);
+      f.core_extent.mx = f.core_extent.mx.cwiseMax(points[i]);
+    }
+    return f;
   });
   float box_lo[3], box_hi[3];  // the main body's bins, per axis
+  bool beyond_core = false;
   for (int d = 0; d < 3; ++d) {
-    AxisHistogram& h = passes[0][d].outside;
-    for (std::size_t k = 1; k < passes.size(); ++k) h.merge(passes[k][d].outside);
+    AxisHistogram& h = passes[0].axes[d].outside;
+    for (std::size_t k = 1; k < passes.size(); ++k) h.merge(passes[k].axes[d].outside);
     for (std::int64_t k = core[d].first; k <= core[d].second; ++k)  // the core holds data
       h.count[static_cast<std::size_t>(k)] += 1;
     const auto [k0, k1] = main_body(h, core[d].first, core[d].second);
+    beyond_core = beyond_core || k0 < core[d].first || k1 > core[d].second;
     box_lo[d] = std::min(h.bin_start(k0), proto[d].core_lo);
     box_hi[d] = std::max(h.bin_start(k1 + 1), proto[d].core_hi);
   }
   // The exact extent of the points inside the main body's box (on every axis at once: a point
   // seen through a window far above the room does not widen the room's x range).
-  struct Part {
-    Eigen::Vector3f mn, mx;
-    bool any = false;
-  };
-  const auto parts = parallel_parts(points.size(), 1 << 20, [&](std::size_t i0, std::size_t i1) {
-    Part r{Eigen::Vector3f::Constant(std::numeric_limits<float>::infinity()),
-           Eigen::Vector3f::Constant(-std::numeric_limits<float>::infinity())};
-    for (std::size_t i = i0; i < i1; ++i) {
-      const float x = points[i].x(), y = points[i].y(), z = points[i].z();
-      if (!(x >= box_lo[0] && x <= box_hi[0] && y >= box_lo[1] && y <= box_hi[1] &&
-            z >= box_lo[2] && z <= box_hi[2]))
-        continue;
-      r.any = true;
-      r.mn = r.mn.cwiseMin(points[i]);
-      r.mx = r.mx.cwiseMax(points[i]);
-    }
-    return r;
-  });
+  std::vector<Part> parts;
+  if (!beyond_core) {
+    for (const FirstPass& f : passes) parts.push_back(f.core_extent);
+  } else {
+    parts = parallel_parts(points.size(), 1 << 20, [&](std::size_t i0, std::size_t i1) {
+      Part r;
+      for (std::size_t i = i0; i < i1; ++i) {
+        const float x = points[i].x(), y = points[i].y(), z = points[i].z();
+        if (!(x >= box_lo[0] && x <= box_hi[0] && y >= box_lo[1] && y <= box_hi[1] &&
+              z >= box_lo[2] && z <= box_hi[2]))
+          continue;
+        r.any = true;
+        r.mn = r.mn.cwiseMin(points[i]);
+        r.mx = r.mx.cwiseMax(points[i]);
+      }
+      return r;
+    });
+  }
   Bounds3 b;
   b.lo_m.setConstant(std::numeric_limits<double>::infinity());
   b.hi_m.setConstant(-std::numeric_limits<double>::infinity());
