@@ -62,6 +62,30 @@ void drop_raised_columns(const Grid<std::int32_t>& bottom, cv::Mat& mask) {
         mask.at<std::uint8_t>(r, c) = 0;
 }
 
+// A pillar goes up to the ceiling: most of its columns hold points at the top of the wall band
+// (the front of a tall shelf that reaches into the band in a low room ends below it). And it
+// stands on the floor: most of its columns hold points in the furniture band too (above a desk
+// in front of it, at least); a lamp hanging in the wall band, under the ceiling's smear, has
+// nothing there.
+bool floor_to_ceiling(const std::vector<CellIndex>& cells, const cloud::VoxelGrid& voxels,
+                      const cloud::LayerAnalysis& layers) {
+  auto columns_with_points = [&](std::int64_t z0, std::int64_t z1) {
+    std::size_t n = 0;
+    for (const auto& c : cells)
+      for (std::int64_t z = std::max<std::int64_t>(0, z0); z <= std::min(z1, voxels.nz - 1); ++z)
+        if (voxels.count(c.col, c.row, z)) {
+          ++n;
+          break;
+        }
+    return n;
+  };
+  const std::int64_t top_hi = std::min(layers.wall_band.hi_layer, voxels.nz - 1);
+  if (2 * columns_with_points(top_hi - 2, top_hi) < cells.size()) return false;
+  const std::int64_t band_lo = std::max<std::int64_t>(layers.furniture_band.lo_layer, 0),
+                     band_hi = std::min(layers.furniture_band.hi_layer, voxels.nz - 1);
+  return band_hi < band_lo || 2 * columns_with_points(band_lo, band_hi) >= cells.size();
+}
+
 }  // namespace
 
 // Pillars and columns: wall-class components that stand free in the room (few unknown cells
@@ -105,30 +129,7 @@ void add_pillars(const Grid<Cell>& layout, const GridGeometry& geo, const cloud:
       }
     if (ring == 0 || unknown > kPillarMaxUnknownShare * static_cast<double>(ring)) continue;
     if (static_cast<double>(cells.size()) * cell * cell < params.min_area_m2) continue;
-    // A pillar goes up to the ceiling: most of its columns hold points at the top of the wall
-    // band. The front of a tall shelf that reaches into the band in a low room ends below it.
-    std::size_t reach_top = 0;
-    const std::int64_t top_hi = std::min(layers.wall_band.hi_layer, voxels.nz - 1);
-    for (const auto& c : cells)
-      for (std::int64_t z = std::max<std::int64_t>(0, top_hi - 2); z <= top_hi; ++z)
-        if (voxels.count(c.col, c.row, z)) {
-          ++reach_top;
-          break;
-        }
-    if (2 * reach_top < cells.size()) continue;
-    // ... and it stands on the floor: most of its columns hold points in the furniture band too
-    // (above a desk in front of it, at least). A lamp hanging in the wall band, seen under the
-    // ceiling's smear, has nothing there.
-    std::size_t in_band = 0;
-    const std::int64_t band_lo = std::max<std::int64_t>(layers.furniture_band.lo_layer, 0),
-                       band_hi = std::min(layers.furniture_band.hi_layer, voxels.nz - 1);
-    for (const auto& c : cells)
-      for (std::int64_t z = band_lo; z <= band_hi; ++z)
-        if (voxels.count(c.col, c.row, z)) {
-          ++in_band;
-          break;
-        }
-    if (band_hi >= band_lo && 2 * in_band < cells.size()) continue;
+    if (!floor_to_ceiling(cells, voxels, layers)) continue;
 
     FurnitureObject o;
     o.id = static_cast<int>(res.objects.size()) + 1;
