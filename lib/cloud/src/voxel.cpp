@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
-#include <tuple>
 
 #include "indoormap/core/errors.hpp"
 #include "indoormap/core/parallel.hpp"

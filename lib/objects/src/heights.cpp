@@ -254,9 +254,8 @@ void drop_stray_below_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxe
 
 // Pocket cells in a gap of a few cells between data cells of about one height (tops in the
 // nearest data cell's band of kSampleBandLayers layers or a neighbouring one): missed samples of
-// one top
-// (seen at a grazing angle), not evidence of an empty cell. A gap between a bin's top and a
-// cabinet behind it is no such gap: the pocket rule decides there.
+// one top (seen at a grazing angle), not evidence of an empty cell. A gap between a bin's top
+// and a cabinet behind it is no such gap: the pocket rule decides there.
 cv::Mat between_samples(const Grid<Column>& cols, const cv::Mat& no_data,
                         const Grid<CellIndex>& nearest, const Grid<std::uint8_t>& pocket,
                         const Grid<std::uint8_t>& mask) {

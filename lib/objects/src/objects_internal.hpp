@@ -109,10 +109,12 @@ Labels join_fragments(const Labels& in, const PieceHeights& heights, double cell
 
 /// Splits every object whose cells form two or more cores joined by necks narrower than
 /// params.neck_width_m (two shelves end to end, bridged by a few cells between their front
-/// corners; a chair touching a table): the cores are the components of the object's geometric
-/// parts opened by a disc neck_width_m across that hold at least params.neck_min_part_m2, and
-/// every cell goes to the core nearest to it inside the part. Pieces joined across a gap
-/// (join_fragments) are not split again. Numbered in raster order.
+/// corners): the cores are the components of the object's geometric parts opened by a disc
+/// neck_width_m across that hold at least params.neck_min_part_m2, and every cell goes to the
+/// core nearest to it inside the part. A part stays whole when a `solid` cell (more than a stray
+/// return) of one core's cells touches one of another's: a seen face runs across the neck (one
+/// shelf with a notch behind its front). Pieces joined across a gap (join_fragments) are not
+/// split again. Numbered in raster order.
 Labels split_at_necks(const Labels& in, const Grid<std::uint8_t>& solid, double cell_m,
                       const ObjectParams& params);
 

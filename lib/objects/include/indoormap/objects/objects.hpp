@@ -26,8 +26,8 @@ struct ObjectParams {
   /// it); a piece still below min_area_m2 joins the largest object within this gap. 0: no joining.
   double join_gap_m = 0.05;
   /// Objects whose cells form cores joined by a neck narrower than this are split, when each
-  /// core holds at least neck_min_part_m2 (two shelves end to end bridged between their corners,
-  /// a chair touching a table). 0: no splitting.
+  /// core holds at least neck_min_part_m2 and no seen face runs across the neck (two shelves end
+  /// to end, bridged between their corners by mixed pixels or an unseen pocket). 0: no splitting.
   double neck_width_m = 0.25;
   double neck_min_part_m2 = 0.2;
   /// An object needs this much seen area (seen_cells): less is a pocket the layout filled along a
