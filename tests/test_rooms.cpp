@@ -222,6 +222,57 @@ TEST(Rooms, PolygonsFittedToTheWallFacesOfRotatedRooms) {
   EXPECT_EQ(rooms::fit_rooms_to_faces(r, Grid<Cell>(3, 3, Cell::kWall)), 0);
 }
 
+// Along 0.8 m of the wall between the rooms, M_r saw only room B's face: its flood ran through
+// the wall's body and A's face (free in M_r), and the navigation map never saw them (unknown). The
+// body behind B's face becomes wall and A's polygon ends at A's face instead of taking the wall
+// in. A cabinet in room A, whose sides M_r calls wall, has room A itself behind its sides and
+// stays as it is.
+TEST(Rooms, WallBodySeenFromTheOtherRoomOnlyIsWall) {
+  RotatedRooms t;
+  const auto local = [&](int c, int r) -> Eigen::Vector2d {
+    return t.rot.transpose() * t.geometry.center_of({c, r});
+  };
+  for (int r = 0; r < t.nav.height; ++r)
+    for (int c = 0; c < t.nav.width; ++c) {
+      const Eigen::Vector2d l = local(c, r);
+      if (l.x() > 3.975 && l.x() < 4.15 && l.y() > 0.1 && l.y() < 0.9)
+        t.layout.at(c, r) = Cell::kFree, t.nav.at(c, r) = Cell::kUnknown;
+      if (std::abs(l.x() - 1.0) < 0.2 && std::abs(l.y() - 1.0) < 0.2) {
+        const bool side = std::abs(l.x() - 1.0) > 0.15 || std::abs(l.y() - 1.0) > 0.15;
+        t.layout.at(c, r) = side ? Cell::kWall : Cell::kFurniture;
+        t.nav.at(c, r) = Cell::kWall;
+      }
+    }
+  rooms::RoomsResult plain = rooms::find_rooms(t.nav, t.geometry);
+  rooms::RoomsResult marked = plain;
+  ASSERT_EQ(plain.rooms.size(), 2u);
+  const int a = rooms::room_at(plain, t.rot * Eigen::Vector2d(2.0, 1.5));
+  ASSERT_GE(a, 1);
+  const Grid<Cell> walls = rooms::mark_wall_bodies(t.layout, t.nav, plain, 0.3);
+  int changed = 0;
+  for (int r = 0; r < t.nav.height; ++r)
+    for (int c = 0; c < t.nav.width; ++c) {
+      if (walls.at(c, r) == t.layout.at(c, r)) continue;
+      ++changed;
+      EXPECT_EQ(walls.at(c, r), Cell::kWall);
+      const Eigen::Vector2d l = local(c, r);  // only in the stretch of the wall
+      EXPECT_TRUE(l.x() > 3.95 && l.x() < 4.2 && l.y() > 0.05 && l.y() < 0.95) << l.transpose();
+    }
+  EXPECT_GT(changed, 30);  // about 3 cells deep along 16 cells
+  rooms::fill_rooms(plain, t.layout, {});
+  rooms::fit_rooms_to_faces(plain, t.layout);
+  rooms::fill_rooms(marked, walls, {});
+  rooms::fit_rooms_to_faces(marked, walls);
+  const auto& pa = plain.rooms[static_cast<std::size_t>(a - 1)].polygon_m;
+  const auto& ma = marked.rooms[static_cast<std::size_t>(a - 1)].polygon_m;
+  EXPECT_GT(boundary_hausdorff(pa, t.a), 0.12);  // the wall's body taken in
+  EXPECT_LT(boundary_hausdorff(ma, t.a), 0.06);
+  EXPECT_NEAR(std::abs(signed_area(ma)), 12.0, 0.12);
+  // Grids of another size leave M_r as it is.
+  EXPECT_EQ(rooms::mark_wall_bodies(t.layout, Grid<Cell>(3, 3, Cell::kWall), plain, 0.3).data,
+            t.layout.data);
+}
+
 // An object whose centre lies in the wall between two rooms (in no polygon, within 0.3 m of one)
 // is a piece of wall; one inside a room, one far outside every room (seen through a window) and a
 // pillar (not furniture) stay; with one room nothing is dropped.

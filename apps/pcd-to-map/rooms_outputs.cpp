@@ -28,8 +28,12 @@ StoreyRooms find_storey_rooms(const layout::MapResult& m, objects::ObjectsResult
     blocked.data[i] = std::find(r.inner_walls.begin(), r.inner_walls.end(), objs.labels.data[i]) !=
                           r.inner_walls.end() ||
                       (wall_cells && objs.wall_cells.data[i]);
-  rooms::fill_rooms(r.rooms, m.layout.layout, blocked);
-  r.fitted = rooms::fit_rooms_to_faces(r.rooms, m.layout.layout, border_params);
+  // Walls that M_r saw from one side only keep their body, so that the room on the unseen side
+  // does not take the wall in.
+  const Grid<Cell> walls =
+      rooms::mark_wall_bodies(m.layout.layout, m.nav.map, r.rooms, params.wall_piece_reach_m);
+  rooms::fill_rooms(r.rooms, walls, blocked);
+  r.fitted = rooms::fit_rooms_to_faces(r.rooms, walls, border_params);
   rooms::remove_objects(objs, r.inner_walls);
   r.wall_pieces = rooms::wall_piece_objects(objs, r.rooms, params);
   rooms::remove_objects(objs, r.wall_pieces);

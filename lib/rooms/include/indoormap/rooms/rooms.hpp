@@ -36,7 +36,8 @@ struct RoomsParams {
   double inner_wall_reach_m = 0.15;
   /// An object whose box centre lies in no room's polygon but within this distance of one lies in
   /// a wall (room_objects.hpp, wall_piece_objects): furniture stands in a room, and a wall is
-  /// at most 0.3 m thick on the simulated and scanned buildings.
+  /// at most 0.3 m thick on the simulated and scanned buildings. Also the depth of a wall's body
+  /// behind a face seen from one side only (mark_wall_bodies).
   double wall_piece_reach_m = 0.3;
 };
 
@@ -71,6 +72,22 @@ struct RoomsResult {
 /// room (no exception). Throws UsageError for invalid params.
 RoomsResult find_rooms(const Grid<Cell>& nav, const GridGeometry& geometry,
                        const RoomsParams& params = {});
+
+/// M_r with the bodies of walls seen from one side only marked as wall (nav: the navigation map
+/// the rooms were found in). Where M_r's wall band saw a wall between two rooms from one side only
+/// (a corridor's wall at a grazing angle, a face in a pillar's shadow, a face a mobile scanner
+/// passed by), its flood ran through the wall's body up to the far face, and the room on the
+/// unseen side would take the wall in. The far face is the other room's: its wall cells have that
+/// room's free cells (and no other room's) within two cells, straight in front of the face. From
+/// each such cell, straight back along the face's normal: after at most two wall cells (the face),
+/// the cells that M_r calls free or furniture and that are no room's free cells are the body, up
+/// to max_wall_m, a room's cell, an unknown cell or a second wall, or an obstacle of nav that
+/// follows body cells which are none (the near face seen low down). They become wall when another
+/// room lies behind: within 2 m, or right behind a body that nav saw as an obstacle throughout. The
+/// result is for fill_rooms and fit_rooms_to_faces; M_r itself stays the paper's. Grids of another
+/// size than the rooms' leave layout as it is.
+Grid<Cell> mark_wall_bodies(const Grid<Cell>& layout, const Grid<Cell>& nav,
+                            const RoomsResult& rooms, double max_wall_m);
 
 /// Wall-bounded rooms: each room's cells grown (all rooms at once, 4-neighbours, first come
 /// first served) into the cells that are not free, up to max_fill_m, stopping at the wall cells
