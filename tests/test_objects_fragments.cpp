@@ -64,6 +64,23 @@ TEST(ObjectFragments, ADeskCutByAShadowIsOneObject) {
   }
 }
 
+// Two shelves end to end along a rotated wall, the floor seen between them: on the grid's
+// staircase their corners come within the gap at a single pair of cells. A contact that short is
+// no shadow across one piece; they stay two objects. The same pieces side by side along a whole
+// edge, one cell apart, are one desk cut by a shadow.
+TEST(ObjectFragments, PiecesMeetingAtACornerStaySeparate) {
+  const int w = 40, h = 24;
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  Grid<Cell> L(w, h, Cell::kFree);
+  auto g = voxels(w, h, 50);
+  block(L, g, 2, 15, 3, 9, 1.9);
+  block(L, g, 17, 30, 11, 17, 1.9);  // corner (17, 11) two cells from (15, 9) on both axes
+  const auto res = extract_objects(L, geo, g, flat_layers(), {});
+  expect_accounted(L, res, {});
+  ASSERT_EQ(res.objects.size(), 2u);
+  for (const auto& o : res.objects) EXPECT_EQ(o.cells, 14 * 7);
+}
+
 TEST(ObjectFragments, DifferentHeightsAGapApartStaySeparate) {
   const int w = 40, h = 16;
   const GridGeometry geo({0.0, 0.0}, 0.05, w, h);

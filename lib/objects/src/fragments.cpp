@@ -54,6 +54,12 @@ std::map<std::pair<int, int>, std::int64_t> fragments_near_pairs(const Labels& l
   return near;
 }
 
+// Two pieces of at least the minimum area whose cells come within the gap at fewer cell pairs
+// than this meet at a corner: two shelves end to end along a rotated wall, the floor seen between
+// them, touch at one or two cells of the grid's staircase. A shadow or a missed row of samples
+// cuts a piece across its width, and a backrest rests on its seat along its length: tens of pairs.
+constexpr std::int64_t kMinContactPairs = 3;
+
 }  // namespace
 
 Labels join_fragments(const Labels& in, const PieceHeights& heights, double cell_m,
@@ -78,6 +84,8 @@ Labels join_fragments(const Labels& in, const PieceHeights& heights, double cell
     const double ta = med[pair.first], tb = med[pair.second];
     if (std::isnan(ta) || std::isnan(tb)) continue;
     if (std::abs(ta - tb) > params.split_height_step_m + 1e-6) continue;
+    if (count < kMinContactPairs && area[pair.first] >= min_cells && area[pair.second] >= min_cells)
+      continue;
     int a = fragments_find(parent, pair.first), b = fragments_find(parent, pair.second);
     if (a == b) continue;
     if (a > b) std::swap(a, b);
@@ -98,6 +106,7 @@ Labels join_fragments(const Labels& in, const PieceHeights& heights, double cell
     const double tol = heights.layer_m + 1e-6;
     if (std::isnan(b_hi) || std::isnan(b_lo)) continue;
     if (area[hi] < min_cells || area[lo] < min_cells) continue;    // specks: step 2
+    if (count < kMinContactPairs) continue;                        // a corner: two pieces
     if (b_hi - heights.floor_z_m < kRestMinClearance_m) continue;  // stands on the floor
     if (b_hi < b_lo - tol || b_hi > med[lo] + tol) continue;       // not on the lower piece
     int a = fragments_find(parent, hi), b = fragments_find(parent, lo);
