@@ -66,8 +66,8 @@ TEST(ObjectFragments, ADeskCutByAShadowIsOneObject) {
 
 // Two shelves end to end along a rotated wall, the floor seen between them: on the grid's
 // staircase their corners come within the gap at a single pair of cells. A contact that short is
-// no shadow across one piece; they stay two objects. The same pieces side by side along a whole
-// edge, one cell apart, are one desk cut by a shadow.
+// no shadow across one piece; they stay two objects (pieces one cell apart along a whole edge
+// are one desk cut by a shadow: ADeskCutByAShadowIsOneObject).
 TEST(ObjectFragments, PiecesMeetingAtACornerStaySeparate) {
   const int w = 40, h = 24;
   const GridGeometry geo({0.0, 0.0}, 0.05, w, h);

@@ -34,13 +34,14 @@ struct Normal {
   bool ok = false;
 };
 
-/// The face's normal at wall cell (c, r): the minor axis of the wall cells within three cells,
-/// turned away from the room's cells. Those cells must lie along a line, their spread along it at
-/// least kMinElongation times that across: a face, also near a corner where the other wall's
-/// cells enter the window, but not a blob or the end of a wall, whose "normal" would run along
-/// the room. The room's cells must lie straight in front of the face.
+/// A face's wall cells spread along its line at least this many times more than across it; also
+/// near a corner, where the other wall's cells enter the window, but not at a blob or the end of a
+/// wall, whose "normal" would run along the room.
 constexpr double kMinElongation = 2.5;
 
+/// The face's normal at wall cell (c, r): the minor axis of the wall cells within three cells
+/// (which lie along a line, kMinElongation), turned away from the room's cells; the room's cells
+/// must lie straight in front of the face.
 Normal face_normal(const Grid<Cell>& layout, const Grid<std::uint16_t>& labels, int room, int c,
                    int r) {
   double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0, fx = 0, fy = 0;
@@ -146,9 +147,9 @@ Grid<Cell> mark_wall_bodies(const Grid<Cell>& layout, const Grid<Cell>& nav,
     return out;
   const double cell = rooms.geometry.cell_m(), reach = max_wall_m / cell;
   // Another room lies behind a wall's body: past an unseen stretch (the body, a shadow) up to
-  // 2 m, or right behind it (within two cells) when the navigation map saw the whole body as an
-  // obstacle (the wall's top). An object in a room, whose side M_r may call wall, has the same
-  // room behind it, or another one only beyond a wall.
+  // 2 m from the face, or within max_wall_m and two cells of it when the navigation map saw the
+  // whole body as an obstacle (the wall's top). An object in a room, whose side M_r may call
+  // wall, has the same room behind it, or another one only beyond a wall.
   constexpr double kBehindReach_m = 2.0;
   for (int r = 0; r < layout.height; ++r)
     for (int c = 0; c < layout.width; ++c) {

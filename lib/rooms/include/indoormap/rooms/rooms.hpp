@@ -83,7 +83,8 @@ RoomsResult find_rooms(const Grid<Cell>& nav, const GridGeometry& geometry,
 /// the cells that M_r calls free or furniture and that are no room's free cells are the body, up
 /// to max_wall_m, a room's cell, an unknown cell or a second wall, or an obstacle of nav that
 /// follows body cells which are none (the near face seen low down). They become wall when another
-/// room lies behind: within 2 m, or right behind a body that nav saw as an obstacle throughout. The
+/// room lies behind: within 2 m of the face, or within max_wall_m and two cells of it when nav saw
+/// the whole body as an obstacle (the wall's top, seen from above by a mobile scanner). The
 /// result is for fill_rooms and fit_rooms_to_faces; M_r itself stays the paper's. Grids of another
 /// size than the rooms' leave layout as it is.
 Grid<Cell> mark_wall_bodies(const Grid<Cell>& layout, const Grid<Cell>& nav,
