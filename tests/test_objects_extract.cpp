@@ -195,6 +195,50 @@ TEST(Objects, ALampWithSomeCellsOfTheWallFaceItTouchesIsHanging) {
   EXPECT_TRUE(res.objects[1].on_floor);
 }
 
+TEST(Objects, ALampOverTheScannerIsHangingThoughItsFloorWasNotSeen) {
+  // The same lamp and wall face, but the scanner stands under the lamp: the floor beneath it lies
+  // in the scanner's blind cone and holds no point. The scanner had that floor in sight, so the
+  // lamp's cells hang; without the scanner's position they do not (nothing says the floor is
+  // there), and the piece, with the wall's face in it, stands on the floor. The shelf's top over
+  // its hidden floor stays furniture: the shelf's face and sides are in the scanner's way.
+  const int w = 40, h = 20;
+  Grid<Cell> L(w, h, Cell::kFree);
+  auto g = voxels(w, h, 50);
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c)
+      if (c < 2 || c > 25 || r < 4 || r > 9) fill_column(g, c, r, 0.0, 0.05);
+  for (int c = 2; c <= 25; ++c)
+    for (int r = 4; r <= 9; ++r) {
+      L.at(c, r) = Cell::kFurniture;
+      fill_column(g, c, r, 1.95, 2.05);
+    }
+  for (int r = 4; r <= 9; ++r)
+    for (int c = 0; c <= 1; ++c) {
+      L.at(c, r) = c == 0 ? Cell::kWall : Cell::kFurniture;
+      fill_column(g, c, r, 0.05, 2.05);
+    }
+  for (int c = 30; c <= 37; ++c)
+    for (int r = 12; r < h; ++r) {
+      L.at(c, r) = Cell::kFurniture;
+      for (int z = 0; z < 50; ++z) g.counts[(z * g.ny + r) * g.nx + c] = 0;
+      fill_column(g, c, r, r == 12 || c == 30 || c == 37 ? 0.0 : 1.75, 1.8);  // face and sides
+    }
+  ObjectParams p;
+  p.min_area_m2 = 0.0;
+  p.min_seen_area_m2 = 0.0;
+  const GridGeometry geo({0, 0}, 0.05, w, h);
+  const std::vector<Eigen::Vector3d> scanner{{0.7, 0.35, 1.2}};
+  const auto with = extract_objects(L, geo, g, flat_layers(), p, scanner);
+  ASSERT_EQ(with.objects.size(), 2u);
+  EXPECT_EQ(with.objects[0].kind, ObjectKind::kHanging);
+  EXPECT_NEAR(with.objects[0].z_min_m, 1.95, 1e-9);
+  EXPECT_EQ(with.objects[1].kind, ObjectKind::kFurniture);
+  const auto without = extract_objects(L, geo, g, flat_layers(), p);
+  ASSERT_EQ(without.objects.size(), 2u);
+  EXPECT_EQ(without.objects[0].kind, ObjectKind::kFurniture);
+  EXPECT_TRUE(without.objects[0].on_floor);
+}
+
 TEST(Objects, TouchingObjectsOfDifferentHeightsAreSplit) {
   const int w = 10, h = 6;
   Grid<Cell> L(w, h, Cell::kFree);

@@ -103,18 +103,27 @@ struct Acc {
 };
 
 // A cell of a hanging object (a lamp, a wall cupboard): its occupied run starts at least
-// `clearance` layers above the floor, and the floor under it was seen. Under a tall shelf's top
-// the floor is hidden by the shelf's body, so its top-only cells do not hang.
+// `clearance` layers above the floor, and the floor under it was seen, or a scanner had it in
+// sight (a lamp over the scanner: the floor under it lies in the scanner's blind cone). Under a
+// tall shelf's top the floor is hidden by the shelf's body, so its top-only cells do not hang.
 bool hanging_cell(const Column& col, const cloud::VoxelGrid& voxels, int c, int r,
-                  std::int64_t floor_layer, std::int64_t clearance) {
-  return col.top >= 0 && col.bottom - floor_layer >= clearance &&
-         floor_seen(voxels, c, r, floor_layer);
+                  std::int64_t floor_layer, std::int64_t clearance,
+                  const std::vector<Eigen::Vector3d>& scanners_map) {
+  if (col.top < 0 || col.bottom - floor_layer < clearance) return false;
+  if (floor_seen(voxels, c, r, floor_layer)) return true;
+  const Eigen::Vector3d floor(voxels.origin_m.x() + (c + 0.5) * voxels.cell_m,
+                              voxels.origin_m.y() + (r + 0.5) * voxels.cell_m,
+                              voxels.layer_center_m(floor_layer + 1));
+  return std::any_of(scanners_map.begin(), scanners_map.end(), [&](const Eigen::Vector3d& s) {
+    return line_of_sight(voxels, s, floor, voxels.cell_m);
+  });
 }
 
 // Per label: its cells, bounding box, voxel range and whether it touches a wall.
 std::vector<Acc> accumulate(const Labels& lab, const Grid<Column>& cols, const Grid<Cell>& layout,
                             const cloud::VoxelGrid& voxels, const cloud::LayerAnalysis& layers,
-                            const ObjectParams& params) {
+                            const ObjectParams& params,
+                            const std::vector<Eigen::Vector3d>& scanners_map) {
   const auto gap = static_cast<std::int64_t>(std::ceil(voxels.to_cells(kOpeningMinGap_m) - 1e-9));
   const auto clearance =
       static_cast<std::int64_t>(std::ceil(voxels.to_cells(params.hanging_min_clearance_m) - 1e-9));
@@ -135,7 +144,7 @@ std::vector<Acc> accumulate(const Labels& lab, const Grid<Column>& cols, const G
         a.top = std::max(a.top, col.top);
         a.tops.push_back(col.top);
         a.lintel += lintel_above(voxels, c, r, layers.floor_layer, layers.ceiling_layer, gap, run);
-        if (hanging_cell(col, voxels, c, r, layers.floor_layer, clearance)) {
+        if (hanging_cell(col, voxels, c, r, layers.floor_layer, clearance, scanners_map)) {
           ++a.hanging;
           a.hanging_bottom = std::min(a.hanging_bottom, col.bottom);
         }
@@ -332,7 +341,8 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
       split_at_necks(join_fragments(label_objects(mask, top, geo, params, scan.any_data), heights,
                                     geo.cell_m(), params),
                      solid, geo.cell_m(), params);
-  const std::vector<Acc> acc = accumulate(lab, scan.cols, layout, voxels, layers, params);
+  const std::vector<Acc> acc =
+      accumulate(lab, scan.cols, layout, voxels, layers, params, scanners_map);
   list_objects(acc, lab, geo, voxels, layers, params, res);
   res.left_over_pieces = lab.count - static_cast<std::int64_t>(res.objects.size());
   for (std::size_t i = 0; i < layout.size(); ++i)
