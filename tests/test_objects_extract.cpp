@@ -196,11 +196,11 @@ TEST(Objects, ALampWithSomeCellsOfTheWallFaceItTouchesIsHanging) {
 }
 
 TEST(Objects, ALampOverTheScannerIsHangingThoughItsFloorWasNotSeen) {
-  // The same lamp and wall face, but the scanner stands under the lamp: the floor beneath it lies
-  // in the scanner's blind cone and holds no point. The scanner had that floor in sight, so the
-  // lamp's cells hang; without the scanner's position they do not (nothing says the floor is
-  // there), and the piece, with the wall's face in it, stands on the floor. The shelf's top over
-  // its hidden floor stays furniture: the shelf's face and sides are in the scanner's way.
+  // The same lamp and wall face, but the scanner stands under the lamp (1.2 m, below the lamp's
+  // 1.95 m): the floor beneath lies in its blind cone and holds no point. The scanner had that
+  // floor in sight, so the lamp's cells hang; without the scanner's position they do not (nothing
+  // says the floor is there), and the piece, with the wall's face in it, stands on the floor. The
+  // shelf's top over its hidden floor stays furniture: its face and sides block the line.
   const int w = 40, h = 20;
   Grid<Cell> L(w, h, Cell::kFree);
   auto g = voxels(w, h, 50);

@@ -104,7 +104,7 @@ struct Acc {
 
 // A cell of a hanging object (a lamp, a wall cupboard): its occupied run starts at least
 // `clearance` layers above the floor, and the floor under it was seen, or a scanner had it in
-// sight (a lamp over the scanner: the floor under it lies in the scanner's blind cone). Under a
+// sight from above (a lamp over the scanner: the floor under it lies in the blind cone). Under a
 // tall shelf's top the floor is hidden by the shelf's body, so its top-only cells do not hang.
 bool hanging_cell(const Column& col, const cloud::VoxelGrid& voxels, int c, int r,
                   std::int64_t floor_layer, std::int64_t clearance,
@@ -114,8 +114,14 @@ bool hanging_cell(const Column& col, const cloud::VoxelGrid& voxels, int c, int 
   const Eigen::Vector3d floor(voxels.origin_m.x() + (c + 0.5) * voxels.cell_m,
                               voxels.origin_m.y() + (r + 0.5) * voxels.cell_m,
                               voxels.layer_center_m(floor_layer + 1));
+  // Only a run above the scanner's head, over the floor within its height of it (45 degrees
+  // down, where a terrestrial scanner's field ends: -40 to -60 degrees). A cabinet's top next to
+  // the scanner lies below its head, and its sides in the same blind cone leave the line clear;
+  // farther out a clear line through a sparse face is no sign of a floor that was only missed.
+  const double run_bottom = voxels.layer_bottom_m(col.bottom);
   return std::any_of(scanners_map.begin(), scanners_map.end(), [&](const Eigen::Vector3d& s) {
-    return line_of_sight(voxels, s, floor, voxels.cell_m);
+    return s.z() < run_bottom && (s - floor).head<2>().norm() <= s.z() - floor.z() &&
+           line_of_sight(voxels, s, floor, voxels.cell_m);
   });
 }
 
