@@ -156,87 +156,71 @@ TEST(Objects, ObjectsHighAboveTheFloorAreHanging) {
   EXPECT_EQ(res.objects[0].kind, ObjectKind::kFurniture);
 }
 
+namespace {
+
+// A lamp 1.2 x 0.3 m at 1.95-2.05 m, its end against a wall whose face (two cells, floor to
+// 2.05 m) joins its piece; a shelf with face and sides to the floor, top-only cells over its
+// hidden floor. The floor is seen elsewhere, under the lamp when floor_under_lamp.
+struct LampScene {
+  Grid<Cell> L{40, 20, Cell::kFree};
+  cloud::VoxelGrid g = voxels(40, 20, 50);
+  explicit LampScene(bool floor_under_lamp) {
+    for (int r = 0; r < L.height; ++r)
+      for (int c = 0; c < L.width; ++c)
+        if (floor_under_lamp || c < 2 || c > 25 || r < 4 || r > 9) fill_column(g, c, r, 0.0, 0.05);
+    for (int c = 2; c <= 25; ++c)
+      for (int r = 4; r <= 9; ++r) {
+        L.at(c, r) = Cell::kFurniture;
+        fill_column(g, c, r, 1.95, 2.05);
+      }
+    for (int r = 4; r <= 9; ++r)
+      for (int c = 0; c <= 1; ++c) {
+        L.at(c, r) = c == 0 ? Cell::kWall : Cell::kFurniture;
+        fill_column(g, c, r, 0.05, 2.05);
+      }
+    for (int c = 30; c <= 37; ++c)
+      for (int r = 12; r < L.height; ++r) {
+        L.at(c, r) = Cell::kFurniture;
+        for (int z = 0; z < 50; ++z) g.counts[(z * g.ny + r) * g.nx + c] = 0;
+        fill_column(g, c, r, r == 12 || c == 30 || c == 37 ? 0.0 : 1.75, 1.8);
+      }
+  }
+  std::vector<FurnitureObject> objects(const std::vector<Eigen::Vector3d>& scanners = {}) const {
+    const ObjectParams p{.min_area_m2 = 0.0, .min_seen_area_m2 = 0.0};
+    const GridGeometry geo({0, 0}, 0.05, L.width, L.height);
+    return extract_objects(L, geo, g, flat_layers(), p, scanners).objects;
+  }
+};
+
+}  // namespace
+
 TEST(Objects, ALampWithSomeCellsOfTheWallFaceItTouchesIsHanging) {
-  // A lamp 1.2 x 0.3 m at 1.95-2.05 m, the floor under it seen, its end against a wall whose face
-  // (two cells, floor to 2.05 m) joins its piece: most of its cells hang, so the object is
-  // "hanging" from 1.95 m, not furniture standing on the floor. A shelf's top over a hidden
-  // floor (a face row, then top-only cells) is no lamp, though most of its cells start high.
-  const int w = 40, h = 20;
-  Grid<Cell> L(w, h, Cell::kFree);
-  auto g = voxels(w, h, 50);
-  for (int r = 0; r < h; ++r)
-    for (int c = 0; c < w; ++c) fill_column(g, c, r, 0.0, 0.05);  // the floor, seen
-  for (int c = 2; c <= 25; ++c)
-    for (int r = 4; r <= 9; ++r) {
-      L.at(c, r) = Cell::kFurniture;
-      fill_column(g, c, r, 1.95, 2.05);
-    }
-  for (int r = 4; r <= 9; ++r)  // the wall's face at the lamp's end
-    for (int c = 0; c <= 1; ++c) {
-      L.at(c, r) = c == 0 ? Cell::kWall : Cell::kFurniture;
-      fill_column(g, c, r, 0.05, 2.05);
-    }
-  for (int c = 30; c <= 37; ++c)  // the shelf: face on row 12, top-only over rows 13-19
-    for (int r = 12; r < h; ++r) {
-      L.at(c, r) = Cell::kFurniture;
-      for (int z = 0; z < 50; ++z) g.counts[(z * g.ny + r) * g.nx + c] = 0;
-      fill_column(g, c, r, r == 12 ? 0.0 : 1.75, 1.8);
-    }
-  ObjectParams p;
-  p.min_area_m2 = 0.0;
-  p.min_seen_area_m2 = 0.0;
-  const auto res = extract_objects(L, GridGeometry({0, 0}, 0.05, w, h), g, flat_layers(), p);
-  ASSERT_EQ(res.objects.size(), 2u);
-  EXPECT_EQ(res.objects[0].kind, ObjectKind::kHanging);
-  EXPECT_EQ(res.objects[0].cells, 25 * 6);
-  EXPECT_FALSE(res.objects[0].on_floor);
-  EXPECT_NEAR(res.objects[0].z_min_m, 1.95, 1e-9);
-  EXPECT_EQ(res.objects[1].kind, ObjectKind::kFurniture);
-  EXPECT_TRUE(res.objects[1].on_floor);
+  // Most of the lamp's cells hang: "hanging" from 1.95 m, not furniture on the floor with the
+  // wall's face in its piece. The shelf's top over a hidden floor is no lamp.
+  const auto objs = LampScene(true).objects();
+  ASSERT_EQ(objs.size(), 2u);
+  EXPECT_EQ(objs[0].kind, ObjectKind::kHanging);
+  EXPECT_EQ(objs[0].cells, 25 * 6);
+  EXPECT_FALSE(objs[0].on_floor);
+  EXPECT_NEAR(objs[0].z_min_m, 1.95, 1e-9);
+  EXPECT_EQ(objs[1].kind, ObjectKind::kFurniture);
+  EXPECT_TRUE(objs[1].on_floor);
 }
 
 TEST(Objects, ALampOverTheScannerIsHangingThoughItsFloorWasNotSeen) {
-  // The same lamp and wall face, but the scanner stands under the lamp (1.2 m, below the lamp's
-  // 1.95 m): the floor beneath lies in its blind cone and holds no point. The scanner had that
-  // floor in sight, so the lamp's cells hang; without the scanner's position they do not (nothing
-  // says the floor is there), and the piece, with the wall's face in it, stands on the floor. The
-  // shelf's top over its hidden floor stays furniture: its face and sides block the line.
-  const int w = 40, h = 20;
-  Grid<Cell> L(w, h, Cell::kFree);
-  auto g = voxels(w, h, 50);
-  for (int r = 0; r < h; ++r)
-    for (int c = 0; c < w; ++c)
-      if (c < 2 || c > 25 || r < 4 || r > 9) fill_column(g, c, r, 0.0, 0.05);
-  for (int c = 2; c <= 25; ++c)
-    for (int r = 4; r <= 9; ++r) {
-      L.at(c, r) = Cell::kFurniture;
-      fill_column(g, c, r, 1.95, 2.05);
-    }
-  for (int r = 4; r <= 9; ++r)
-    for (int c = 0; c <= 1; ++c) {
-      L.at(c, r) = c == 0 ? Cell::kWall : Cell::kFurniture;
-      fill_column(g, c, r, 0.05, 2.05);
-    }
-  for (int c = 30; c <= 37; ++c)
-    for (int r = 12; r < h; ++r) {
-      L.at(c, r) = Cell::kFurniture;
-      for (int z = 0; z < 50; ++z) g.counts[(z * g.ny + r) * g.nx + c] = 0;
-      fill_column(g, c, r, r == 12 || c == 30 || c == 37 ? 0.0 : 1.75, 1.8);  // face and sides
-    }
-  ObjectParams p;
-  p.min_area_m2 = 0.0;
-  p.min_seen_area_m2 = 0.0;
-  const GridGeometry geo({0, 0}, 0.05, w, h);
-  const std::vector<Eigen::Vector3d> scanner{{0.7, 0.35, 1.2}};
-  const auto with = extract_objects(L, geo, g, flat_layers(), p, scanner);
-  ASSERT_EQ(with.objects.size(), 2u);
-  EXPECT_EQ(with.objects[0].kind, ObjectKind::kHanging);
-  EXPECT_NEAR(with.objects[0].z_min_m, 1.95, 1e-9);
-  EXPECT_EQ(with.objects[1].kind, ObjectKind::kFurniture);
-  const auto without = extract_objects(L, geo, g, flat_layers(), p);
-  ASSERT_EQ(without.objects.size(), 2u);
-  EXPECT_EQ(without.objects[0].kind, ObjectKind::kFurniture);
-  EXPECT_TRUE(without.objects[0].on_floor);
+  // The scanner stands under the lamp (1.2 m): the floor beneath lies in its blind cone. It had
+  // that floor in sight, so the lamp hangs; without its position nothing says the floor is there,
+  // and the piece stands on the floor. The shelf's face and sides block the line to its floor.
+  const LampScene scene(false);
+  const auto with = scene.objects({{0.7, 0.35, 1.2}});
+  ASSERT_EQ(with.size(), 2u);
+  EXPECT_EQ(with[0].kind, ObjectKind::kHanging);
+  EXPECT_NEAR(with[0].z_min_m, 1.95, 1e-9);
+  EXPECT_EQ(with[1].kind, ObjectKind::kFurniture);
+  const auto without = scene.objects();
+  ASSERT_EQ(without.size(), 2u);
+  EXPECT_EQ(without[0].kind, ObjectKind::kFurniture);
+  EXPECT_TRUE(without[0].on_floor);
 }
 
 TEST(Objects, TouchingObjectsOfDifferentHeightsAreSplit) {
