@@ -10,41 +10,15 @@
 #include "indoormap/layout/nav_map.hpp"
 #include "indoormap/layout/nearest_origin.hpp"
 #include "indoormap/layout/storeys.hpp"
+#include "nav_grids.hpp"
 
 using namespace indoormap;
 using namespace indoormap::layout;
 
-namespace {
-
-// nx x ny cells of cell_m, 30 layers; by default 40 x 20 cells of 0.1 m, floor at z 0.05
-// (layer 0).
-cloud::VoxelGrid room(double cell_m = 0.1, int nx = 40, int ny = 20) {
-  cloud::VoxelGrid g;
-  g.cell_m = cell_m;
-  g.nx = nx;
-  g.ny = ny;
-  g.nz = 30;
-  g.counts.assign(static_cast<std::size_t>(g.voxel_count()), 0);
-  return g;
-}
-
-void put(cloud::VoxelGrid& g, int x, int y, int z, std::uint16_t n = 5) {
-  g.counts[static_cast<std::size_t>(g.index(x, y, z))] = n;
-}
-
-// room() with its whole floor seen (a point in layer 0 of every column).
-cloud::VoxelGrid room_with_seen_floor(double cell_m, int nx, int ny) {
-  cloud::VoxelGrid g = room(cell_m, nx, ny);
-  for (int y = 0; y < ny; ++y)
-    for (int x = 0; x < nx; ++x) put(g, x, y, 0);
-  return g;
-}
-
-Cell at(const NavResult& r, int c, int row) {
-  return r.map.at(c, row);
-}
-
-}  // namespace
+using test::at;
+using test::put;
+using test::room;
+using test::room_with_seen_floor;
 
 // A wall at x = 2.0 m with a door (rows 8-11) under a lintel at 2.0 m; left of the wall the
 // floor is seen; a cord speck, a table leg and a sparse table top in the left room.
@@ -377,6 +351,9 @@ TEST(NavMap, ParametersAreValidated) {
   EXPECT_THROW(validate(p), UsageError);
   p = {};
   p.ray_under_min_m = -0.1;
+  EXPECT_THROW(validate(p), UsageError);
+  p = {};
+  p.over_low_max_m = 1.5;  // above robot.height_m
   EXPECT_THROW(validate(p), UsageError);
 }
 

@@ -32,6 +32,30 @@ void visit_level(cloud::LevelParams& lv, F& f) {
   f("level", "seed", lv.seed);
 }
 
+// The navigation map's fields; its robot keys open the robot section.
+template <class F>
+void visit_nav(layout::NavParams& nv, F&& f) {
+  f("nav", "min_points", nv.min_points);
+  f("nav", "min_column_m", nv.min_column_m);
+  f("nav", "min_neighbours", nv.min_neighbours);
+  f("nav", "floor_tolerance_m", nv.floor_tolerance_m);
+  f("nav", "floor_closing_cells", nv.floor_closing_cells);
+  f("nav", "floor_hole_max_m2", nv.floor_hole_max_m2);
+  f("nav", "floor_hole_min_free_share", nv.floor_hole_min_free_share);
+  f("nav", "floor_hole_min_free_share_no_rays", nv.floor_hole_min_free_share_no_rays);
+  f("nav", "shadow_max_width_m", nv.shadow_max_width_m);
+  f("nav", "shadow_min_depth_m", nv.shadow_min_depth_m);
+  f("nav", "floor_max_offset_m", nv.floor_max_offset_m);
+  f("nav", "floor_tile_m", nv.floor_tile_m);
+  f("nav", "rays", nv.rays);
+  f("nav", "max_range_m", nv.max_range_m);
+  f("nav", "over_low_max_m", nv.over_low_max_m);
+  f("nav", "scanner_clear_m", nv.scanner_clear_m);
+  f("nav", "ray_under_min_m", nv.ray_under_min_m);
+  f("robot", "min_obstacle_height_m", nv.min_obstacle_height_m);
+  f("robot", "height_m", nv.height_m);
+}
+
 // Calls f(section, key, field) for every configurable field, in documentation order. One list
 // serves reading, printing and validation, so they cannot drift apart.
 template <class F>
@@ -150,25 +174,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("storeys", "min_slab_m", st.min_slab_m);
   f("storeys", "min_height_m", st.min_height_m);
   f("storeys", "surface_min_fraction", st.surface_min_fraction);
-  auto& nv = c.map.nav;  // the navigation map; its robot keys open the robot section
-  f("nav", "min_points", nv.min_points);
-  f("nav", "min_column_m", nv.min_column_m);
-  f("nav", "min_neighbours", nv.min_neighbours);
-  f("nav", "floor_tolerance_m", nv.floor_tolerance_m);
-  f("nav", "floor_closing_cells", nv.floor_closing_cells);
-  f("nav", "floor_hole_max_m2", nv.floor_hole_max_m2);
-  f("nav", "floor_hole_min_free_share", nv.floor_hole_min_free_share);
-  f("nav", "floor_hole_min_free_share_no_rays", nv.floor_hole_min_free_share_no_rays);
-  f("nav", "shadow_max_width_m", nv.shadow_max_width_m);
-  f("nav", "shadow_min_depth_m", nv.shadow_min_depth_m);
-  f("nav", "floor_max_offset_m", nv.floor_max_offset_m);
-  f("nav", "floor_tile_m", nv.floor_tile_m);
-  f("nav", "rays", nv.rays);
-  f("nav", "max_range_m", nv.max_range_m);
-  f("nav", "scanner_clear_m", nv.scanner_clear_m);
-  f("nav", "ray_under_min_m", nv.ray_under_min_m);
-  f("robot", "min_obstacle_height_m", nv.min_obstacle_height_m);
-  f("robot", "height_m", nv.height_m);
+  visit_nav(c.map.nav, f);
   visit_plan(c.plan, f);
 }
 

@@ -366,6 +366,7 @@ json summary_json(const std::string& program, const PipelineRun& run, const Pipe
           {"free_floor_seen", m.nav.cells_floor_seen},
           {"free_rays_only", m.nav.cells_ray_free},
           {"free_shadows", m.nav.cells_shadow_filled},
+          {"free_over_low", m.nav.cells_over_low},
           {"free_floor_holes", m.nav.cells_hole_filled},
           {"unknown", m.nav.cells_unknown}}},
         {"specks_dropped", m.nav.specks_dropped}}},

@@ -6,6 +6,7 @@
 #include "indoormap/draw/rooms_png.hpp"
 #include "indoormap/formats/json.hpp"
 #include "indoormap/formats/rooms_json.hpp"
+#include "indoormap/layout/nav_map.hpp"
 #include "indoormap/rooms/room_objects.hpp"
 
 namespace indoormap::app {
@@ -18,7 +19,8 @@ StoreyRooms find_storey_rooms(const layout::MapResult& m, objects::ObjectsResult
                               const rooms::RoomsParams& params) {
   const auto t0 = std::chrono::steady_clock::now();
   StoreyRooms r;
-  r.rooms = rooms::find_rooms(m.nav.map, m.geometry, params);
+  const Grid<Cell> seen_nav = layout::map_without_over_low(m.nav);
+  r.rooms = rooms::find_rooms(seen_nav, m.geometry, params);
   r.inner_walls = rooms::inner_wall_objects(objs, m.geometry, r.rooms, params);
   // The polygons reach the walls of M_r (behind furniture too), never into an inner-wall strip
   // or a piece the objects step took for wall (the wall under a window, a wall's face).
@@ -31,7 +33,7 @@ StoreyRooms find_storey_rooms(const layout::MapResult& m, objects::ObjectsResult
   // Walls that M_r saw from one side only keep their body, so that the room on the unseen side
   // does not take the wall in.
   const Grid<Cell> walls =
-      rooms::mark_wall_bodies(m.layout.layout, m.nav.map, r.rooms, params.wall_piece_reach_m);
+      rooms::mark_wall_bodies(m.layout.layout, seen_nav, r.rooms, params.wall_piece_reach_m);
   rooms::fill_rooms(r.rooms, walls, blocked);
   r.fitted = rooms::fit_rooms_to_faces(r.rooms, walls, border_params);
   rooms::remove_objects(objs, r.inner_walls);

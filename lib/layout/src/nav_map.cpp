@@ -9,7 +9,6 @@
 
 #include "floor_holes.hpp"
 #include "indoormap/core/errors.hpp"
-#include "indoormap/core/parallel.hpp"
 #include "level_tops.hpp"
 #include "rays.hpp"
 
@@ -48,6 +47,9 @@ void validate(const NavParams& p) {
           "nav.shadow_max_width_m: must be >= 0");
   require(std::isfinite(p.shadow_min_depth_m) && p.shadow_min_depth_m >= 0,
           "nav.shadow_min_depth_m: must be >= 0");
+  require(
+      std::isfinite(p.over_low_max_m) && p.over_low_max_m >= 0 && p.over_low_max_m <= p.height_m,
+      "nav.over_low_max_m: must be in [0, robot.height_m]");
 }
 
 namespace {
@@ -395,39 +397,24 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
                                                  p, min_span, r.specks_dropped, veil);
   const std::vector<std::uint8_t> raised = raised_obstacles(col, g, floor_z_m, p, veil, occupied);
   for (std::size_t i = 0; i < floor_seen.size(); ++i) floor_seen[i] &= !occupied.data[i];
-  std::vector<std::uint8_t> crossed(occupied.size(), 0), shadow(occupied.size(), 0);
   const detail::ShadowLimits shadow_limits{
       g.to_cells(p.shadow_max_width_m), g.to_cells(p.shadow_min_depth_m),
       detail::compact_obstacles(occupied, p.rays ? g.to_cells(p.shadow_max_width_m) : 0.0)};
+  detail::RayMarks marks(occupied.size());
   if (p.rays) {
-    // The positions are split between the cores, each part marking its own copy of the grid;
-    // the copies are OR-ed in part order (the same map whatever the timing).
-    struct Part {
-      std::vector<std::uint8_t> crossed, shadow;
-      std::size_t positions = 0, rays = 0;
-    };
-    const auto parts = parallel_parts(scanners.size(), 1, [&](std::size_t k0, std::size_t k1) {
-      Part part{std::vector<std::uint8_t>(occupied.size(), 0),
-                std::vector<std::uint8_t>(occupied.size(), 0)};
-      for (std::size_t k = k0; k < k1; ++k) {
-        const Eigen::Vector3d v = g.to_voxel_coords(scanners[k]);
-        if (!v.allFinite()) continue;
-        ++part.positions;
-        part.rays += detail::cast_from(v.head<2>(), col.low_seen, occupied, raised,
-                                       g.to_cells(p.max_range_m), g.to_cells(p.scanner_clear_m),
-                                       floor_seen, shadow_limits, part.crossed, part.shadow);
-      }
-      return part;
-    });
-    for (const Part& part : parts) {
-      r.positions += part.positions;
-      r.rays += part.rays;
-      for (std::size_t i = 0; i < crossed.size(); ++i) {
-        crossed[i] |= part.crossed[i];
-        shadow[i] |= part.shadow[i];
-      }
+    detail::BeamHeights beams;
+    if (p.over_low_max_m > 0) {
+      beams = detail::beam_heights(g, col.hi, off, body_hi, scanners, occupied, raised);
+      beams.max_hidden = g.to_layer_coord(floor_z_m + p.over_low_max_m);
     }
+    marks = detail::cast_all(g, scanners, col.low_seen, occupied, raised,
+                             {g.to_cells(p.max_range_m), g.to_cells(p.scanner_clear_m)}, floor_seen,
+                             shadow_limits, beams);
   }
+  r.positions = marks.positions;
+  r.rays = marks.rays;
+  const std::vector<std::uint8_t>&crossed = marks.crossed, &shadow = marks.shadow,
+        &over = marks.over;
   if (r.positions == 0)
     r.warnings.push_back(
         "no scanner position known: the navigation map's free space comes from the observed "
@@ -439,7 +426,9 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
                                                : detail::NavState::kUnknown;
   for (std::size_t i = 0; i < state.size(); ++i)
     r.observed_free.data[i] = state[i] == detail::NavState::kFree;
-  // Shadows and floor holes are inferred: free in the map, not the layout's evidence.
+  // Shadows, floor holes and the floor behind low obstacles are inferred: free in the map, not
+  // the layout's evidence. The last come after the holes, so that the map without them is the
+  // map the rooms are split on (map_without_over_low).
   for (std::size_t i = 0; i < state.size(); ++i)
     if (shadow[i] && state[i] == detail::NavState::kUnknown) {
       state[i] = detail::NavState::kFree;
@@ -450,6 +439,13 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
       state, drops(g, floor_z_m), w, h,
       {p.floor_hole_max_m2 / cell_m2,
        r.positions ? p.floor_hole_min_free_share : p.floor_hole_min_free_share_no_rays});
+  r.over_low = Grid<std::uint8_t>(w, h, 0);
+  for (std::size_t i = 0; i < state.size(); ++i)
+    if (over[i] && state[i] == detail::NavState::kUnknown) {
+      state[i] = detail::NavState::kFree;
+      r.over_low.data[i] = 1;
+      ++r.cells_over_low;
+    }
   for (std::size_t i = 0; i < state.size(); ++i) {
     Cell c = Cell::kUnknown;
     if (state[i] == detail::NavState::kOccupied) {
@@ -468,6 +464,13 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
     r.map.data[i] = c;
   }
   return r;
+}
+
+Grid<Cell> map_without_over_low(const NavResult& nav) {
+  Grid<Cell> m = nav.map;
+  for (std::size_t i = 0; i < m.data.size() && i < nav.over_low.data.size(); ++i)
+    if (nav.over_low.data[i]) m.data[i] = Cell::kUnknown;
+  return m;
 }
 
 }  // namespace indoormap::layout

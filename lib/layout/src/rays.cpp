@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <opencv2/imgproc.hpp>
 #include <optional>
+
+#include "indoormap/core/parallel.hpp"
 
 namespace indoormap::layout::detail {
 
@@ -18,19 +21,32 @@ struct RayEnd {
   float reach = 0.0f;  ///< the farthest low-seen column of the bin
 };
 
+// Cells without data between two occupied cells of a low obstacle, at most this many apart
+// along a ray, are part of it (a cabinet's top seen at a grazing angle holds a point in every
+// second or third cell), not floor behind it.
+constexpr int kTopGapCells = 3;
+
 // Walks from the position along angle a up to len cells, marking the cells crossed; stops at the
-// first occupied cell beyond clear_cells that is not `raised` (empty: none is), and returns where
-// the first occupied cell stopped it or would have (the shadows are cast from there). Steps of a
-// quarter cell: simple, and it visits every cell a ray crosses but for corner grazes (the
-// neighbouring bins cover those).
-RayEnd walk(const Eigen::Vector2d& s, double a, double from, double len,
-            const Grid<std::uint8_t>& occupied, const std::vector<std::uint8_t>& raised,
-            double clear_cells, std::vector<std::uint8_t>& marked) {
+// first occupied cell beyond clear_cells that is neither `raised` (empty: none is) nor a low
+// obstacle the beams passed over (BeamHeights), and returns where the first occupied cell stopped
+// it or would have (the shadows are cast from there). Behind a low obstacle the beams that saw
+// what lies beyond passed over the line joining the position to the highest top so far (the
+// horizon): a cell more than kTopGapCells behind the last low obstacle, where that line lies
+// below max_hidden, is marked in `over` (inferred: an object lower than the line could hide
+// there). Steps of a quarter cell: simple, and it visits every cell a ray crosses but for corner
+// grazes (the neighbouring bins cover those).
+RayEnd walk(const Eigen::Vector3d& s, double a, double len, const Grid<std::uint8_t>& occupied,
+            const std::vector<std::uint8_t>& raised, double clear_cells, const BeamHeights& beams,
+            std::vector<std::uint8_t>& marked, std::vector<std::uint8_t>& over) {
   const int w = occupied.width, h = occupied.height;
   const double dx = std::cos(a), dy = std::sin(a);
+  constexpr double kNoHorizon = -std::numeric_limits<double>::infinity();
+  double slope = kNoHorizon;         // layers per cell of the line over the highest top passed
+  std::vector<std::size_t> pending;  // cells behind the last low obstacle, kTopGapCells at most
+  int behind = 0;                    // cells since the last low obstacle
   int last = -1;
   std::optional<RayEnd> first;  // the first occupied cell on the way
-  for (double t = from; t <= len; t += 0.25) {
+  for (double t = 0.0; t <= len; t += 0.25) {
     const int c = static_cast<int>(std::floor(s.x() + t * dx));
     const int r = static_cast<int>(std::floor(s.y() + t * dy));
     if (c < 0 || r < 0 || c >= w || r >= h) return first.value_or(RayEnd{static_cast<float>(t)});
@@ -40,10 +56,33 @@ RayEnd walk(const Eigen::Vector2d& s, double a, double from, double len,
     const auto i = static_cast<std::size_t>(idx);
     if (occupied.data[i] && t > clear_cells) {
       if (!first) first = RayEnd{static_cast<float>(t), true};
-      if (raised.empty() || !raised[i]) return *first;
-      continue;  // beneath a raised obstacle: the ray goes on
+      if (!raised.empty() && raised[i]) continue;  // beneath a raised obstacle: the ray goes on
+      const double top = beams.tops.empty() ? -1.0 : beams.tops[i];
+      if (top < 0.0 || top > s.z() - 1.0) return *first;
+      slope = std::max(slope, (top - s.z()) / t);  // over a low one
+      pending.clear();
+      behind = 0;
+      continue;
     }
-    marked[i] = 1;
+    if (slope != kNoHorizon && beams.lows[i] >= 0.0 && beams.lows[i] < s.z() - 1.0) {
+      if (beams.tops[i] > s.z() - 1.0) return *first;  // something over the band, as high as us
+      slope = std::max(slope, (beams.tops[i] - s.z()) / t);
+      pending.clear();
+      behind = 0;
+      continue;
+    }
+    if (slope == kNoHorizon) {
+      marked[i] = 1;
+      continue;
+    }
+    const bool below = s.z() + slope * t <= beams.max_hidden;
+    if (++behind <= kTopGapCells) {
+      if (below) pending.push_back(i);
+      continue;
+    }
+    for (const std::size_t j : pending) over[j] = 1;
+    pending.clear();
+    if (below) over[i] = 1;
   }
   return first.value_or(RayEnd{static_cast<float>(len)});
 }
@@ -205,11 +244,12 @@ std::vector<std::uint8_t> compact_obstacles(const Grid<std::uint8_t>& occupied, 
 // 2D rays from one position: per azimuth bin, to the farthest low-seen column of the bin,
 // stopping at the first occupied cell (outside the position's own clearance); then the shadows
 // of narrow obstacles (fill_shadows) into `shadow`.
-std::size_t cast_from(const Eigen::Vector2d& s_cells, const std::vector<std::uint8_t>& low_seen,
+std::size_t cast_from(const Eigen::Vector3d& s_cells, const std::vector<std::uint8_t>& low_seen,
                       const Grid<std::uint8_t>& occupied, const std::vector<std::uint8_t>& raised,
                       double max_range_cells, double clear_cells,
                       const std::vector<std::uint8_t>& floor_seen, const ShadowLimits& shadows,
-                      std::vector<std::uint8_t>& crossed, std::vector<std::uint8_t>& shadow) {
+                      const BeamHeights& beams, std::vector<std::uint8_t>& crossed,
+                      std::vector<std::uint8_t>& shadow, std::vector<std::uint8_t>& over) {
   const int w = occupied.width, h = occupied.height;
   double r_max = 0.0;
   const int c0 = std::max(0, static_cast<int>(std::floor(s_cells.x() - max_range_cells)));
@@ -247,11 +287,82 @@ std::size_t cast_from(const Eigen::Vector2d& s_cells, const std::vector<std::uin
     if (len <= 0.0) continue;
     ++rays;
     ends[static_cast<std::size_t>(b)] =
-        walk(s_cells, (b + 0.5) / to_bin, 0.0, len, occupied, raised, clear_cells, crossed);
+        walk(s_cells, (b + 0.5) / to_bin, len, occupied, raised, clear_cells, beams, crossed, over);
     ends[static_cast<std::size_t>(b)].reach = static_cast<float>(len);
   }
-  fill_shadows(s_cells, ends, to_bin, occupied, floor_seen, shadows, shadow);
+  fill_shadows(s_cells.head<2>(), ends, to_bin, occupied, floor_seen, shadows, shadow);
   return rays;
+}
+
+namespace {
+
+// The top face of the run of occupied voxels of column (x, y) from layer z up, gaps of one layer
+// bridged.
+std::int64_t run_top(const cloud::VoxelGrid& g, std::int64_t x, std::int64_t y, std::int64_t z) {
+  for (std::int64_t k = z + 1; k < g.nz && k <= z + 2; ++k)
+    if (g.count(x, y, k)) z = k;
+  return z + 1;
+}
+
+}  // namespace
+
+BeamHeights beam_heights(const cloud::VoxelGrid& g, const std::vector<std::int32_t>& hi,
+                         const std::vector<std::int8_t>& off, std::int64_t body_hi,
+                         const std::vector<Eigen::Vector3d>& scanners,
+                         const Grid<std::uint8_t>& occupied,
+                         const std::vector<std::uint8_t>& raised) {
+  std::int64_t cap = 0;  // the highest position's layer
+  for (const Eigen::Vector3d& s : scanners)
+    if (s.allFinite()) cap = std::max(cap, g.layer_of(s.z()));
+  BeamHeights b{std::vector<float>(occupied.size(), -1.0f),
+                std::vector<float>(occupied.size(), -1.0f), 0.0};
+  const std::int64_t w = occupied.width;
+  for (std::size_t i = 0; i < b.tops.size(); ++i) {
+    const std::int64_t x = static_cast<std::int64_t>(i) % w, y = static_cast<std::int64_t>(i) / w;
+    if (occupied.data[i]) {
+      if (!raised[i] && hi[i] >= 0)
+        b.tops[i] = static_cast<float>(run_top(g, x, y, hi[i] + off[i]));
+      continue;
+    }
+    for (std::int64_t z = std::max<std::int64_t>(0, body_hi + 1 + off[i]); z < std::min(cap, g.nz);
+         ++z)
+      if (g.count(x, y, z)) {
+        b.lows[i] = static_cast<float>(z);
+        b.tops[i] = static_cast<float>(run_top(g, x, y, z));
+        break;
+      }
+  }
+  return b;
+}
+
+RayMarks cast_all(const cloud::VoxelGrid& g, const std::vector<Eigen::Vector3d>& scanners,
+                  const std::vector<std::uint8_t>& low_seen, const Grid<std::uint8_t>& occupied,
+                  const std::vector<std::uint8_t>& raised, const RayReach& reach,
+                  const std::vector<std::uint8_t>& floor_seen, const ShadowLimits& shadows,
+                  const BeamHeights& beams) {
+  const auto parts = parallel_parts(scanners.size(), 1, [&](std::size_t k0, std::size_t k1) {
+    RayMarks part(occupied.size());
+    for (std::size_t k = k0; k < k1; ++k) {
+      const Eigen::Vector3d v = g.to_voxel_coords(scanners[k]);
+      if (!v.allFinite()) continue;
+      ++part.positions;
+      part.rays +=
+          cast_from(v, low_seen, occupied, raised, reach.max_range_cells, reach.clear_cells,
+                    floor_seen, shadows, beams, part.crossed, part.shadow, part.over);
+    }
+    return part;
+  });
+  RayMarks all(occupied.size());
+  for (const RayMarks& part : parts) {
+    all.positions += part.positions;
+    all.rays += part.rays;
+    for (std::size_t i = 0; i < all.crossed.size(); ++i) {
+      all.crossed[i] |= part.crossed[i];
+      all.shadow[i] |= part.shadow[i];
+      all.over[i] |= part.over[i];
+    }
+  }
+  return all;
 }
 
 }  // namespace indoormap::layout::detail

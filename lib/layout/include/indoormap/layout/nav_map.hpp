@@ -69,6 +69,13 @@ struct NavParams {
   /// free in the map, not the layout's evidence. docs/pipeline.md, "Shadows". 0 m wide: off.
   double shadow_max_width_m = 0.8;
   double shadow_min_depth_m = 1.0;
+  /// Beams over low obstacles: a ray goes on over an occupied cell whose obstacle's top lies at
+  /// least a layer below the position (a table, a sofa seen from a standing scanner). Behind it
+  /// the beams that saw beyond passed over the line from the position over the highest top so
+  /// far; a cell where that line lies at most this high above the floor is free (inferred, as
+  /// the shadows above): only a thing lower than that could hide there. docs/pipeline.md, "Beams
+  /// over low obstacles". 0: off, every obstacle that is not raised stops a ray.
+  double over_low_max_m = 0.3;
   double scanner_clear_m = 0.3;  ///< occupied cells this close to a position (its tripod) pass
   /// A raised obstacle, whose body-band points lie at least this high above the floor and within
   /// 0.15 m of each other, over a floor seen in its own cell (a table top, a chair's seat), does
@@ -79,6 +86,12 @@ struct NavParams {
 /// Throws UsageError naming the key (robot.height_m, nav.min_points, ...).
 void validate(const NavParams& params);
 
+struct NavResult;
+/// The map with the cells free only from the beams over low obstacles unknown: the rooms' input.
+/// Beside a table that floor and an unseen patch would make a neck the room split takes for a
+/// door (docs/pipeline.md, "Beams over low obstacles").
+Grid<Cell> map_without_over_low(const NavResult& nav);
+
 struct NavResult {
   Grid<Cell> map;  ///< kWall (occupied), kFree, kUnknown; the grid of voxels.geometry2d()
   /// 1 where map is free from observation (floor seen, rays), 0 elsewhere and on filled floor
@@ -86,9 +99,12 @@ struct NavResult {
   Grid<std::uint8_t> observed_free;
   double body_lo_m = 0.0, body_hi_m = 0.0;  ///< the body band, map-frame heights
   std::int64_t cells_occupied = 0, cells_free = 0, cells_unknown = 0;
-  std::int64_t cells_floor_seen = 0;     ///< free cells whose floor holds points
-  std::int64_t cells_ray_free = 0;       ///< free cells known from rays alone
+  std::int64_t cells_floor_seen = 0;  ///< free cells whose floor holds points
+  std::int64_t cells_ray_free = 0;    ///< free cells known from rays alone
+  /// 1 on the free cells known only from the beams over low obstacles (NavParams::over_low_max_m).
+  Grid<std::uint8_t> over_low;
   std::int64_t cells_shadow_filled = 0;  ///< free cells behind narrow obstacles (none of those)
+  std::int64_t cells_over_low = 0;       ///< free cells behind low obstacles (none of those)
   std::int64_t cells_hole_filled = 0;    ///< free cells of filled floor holes (none of those)
   std::int64_t specks_dropped = 0;       ///< body-band columns with points below the evidence rule
   std::size_t positions = 0;             ///< scanner positions used for rays
