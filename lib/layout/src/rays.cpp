@@ -251,35 +251,45 @@ std::size_t cast_from(const Eigen::Vector3d& s_cells, const std::vector<std::uin
                       const BeamHeights& beams, std::vector<std::uint8_t>& crossed,
                       std::vector<std::uint8_t>& shadow, std::vector<std::uint8_t>& over) {
   const int w = occupied.width, h = occupied.height;
-  double r_max = 0.0;
   const int c0 = std::max(0, static_cast<int>(std::floor(s_cells.x() - max_range_cells)));
   const int c1 = std::min(w - 1, static_cast<int>(std::ceil(s_cells.x() + max_range_cells)));
   const int r0 = std::max(0, static_cast<int>(std::floor(s_cells.y() - max_range_cells)));
   const int r1 = std::min(h - 1, static_cast<int>(std::ceil(s_cells.y() + max_range_cells)));
   if (c0 > c1 || r0 > r1) return 0;
-  for (int r = r0; r <= r1; ++r)
+  // Squared distances, and atan2 in float: this loop visits every column of the window for every
+  // position (most of a storey's cost of the rays).
+  const auto sx = static_cast<float>(s_cells.x()), sy = static_cast<float>(s_cells.y());
+  float r2_max = 0.0f;
+  for (int r = r0; r <= r1; ++r) {
+    const float dy = r + 0.5f - sy;
     for (int c = c0; c <= c1; ++c)
-      if (low_seen[static_cast<std::size_t>(r) * w + c])
-        r_max = std::max(r_max, std::hypot(c + 0.5 - s_cells.x(), r + 0.5 - s_cells.y()));
-  r_max = std::min(r_max, max_range_cells);
+      if (low_seen[static_cast<std::size_t>(r) * w + c]) {
+        const float dx = c + 0.5f - sx;
+        r2_max = std::max(r2_max, dx * dx + dy * dy);
+      }
+  }
+  const double r_max = std::min<double>(std::sqrt(r2_max), max_range_cells);
   if (r_max < 1.0) return 0;
   // Bins half a cell wide at the farthest range, so neighbouring rays leave no cell out.
   const int bins =
       std::clamp(static_cast<int>(std::ceil(4.0 * std::numbers::pi * r_max)), 64, 1 << 16);
-  std::vector<float> reach(static_cast<std::size_t>(bins), 0.0f);
+  std::vector<float> reach(static_cast<std::size_t>(bins), 0.0f);  // squared, then not
   const double to_bin = bins / (2.0 * std::numbers::pi);
-  for (int r = r0; r <= r1; ++r)
+  const auto to_bin_f = static_cast<float>(to_bin), r2_in = static_cast<float>(r_max * r_max);
+  constexpr float kTwoPi = 2.0f * std::numbers::pi_v<float>;
+  for (int r = r0; r <= r1; ++r) {
+    const float dy = r + 0.5f - sy;
     for (int c = c0; c <= c1; ++c) {
       if (!low_seen[static_cast<std::size_t>(r) * w + c]) continue;
-      const double dx = c + 0.5 - s_cells.x(), dy = r + 0.5 - s_cells.y();
-      const double d = std::hypot(dx, dy);
-      if (d > r_max) continue;
-      double a = std::atan2(dy, dx);
-      if (a < 0) a += 2.0 * std::numbers::pi;
-      const int b = std::min(bins - 1, static_cast<int>(a * to_bin));
-      reach[static_cast<std::size_t>(b)] =
-          std::max(reach[static_cast<std::size_t>(b)], static_cast<float>(d));
+      const float dx = c + 0.5f - sx, d2 = dx * dx + dy * dy;
+      if (d2 > r2_in) continue;
+      float a = std::atan2(dy, dx);
+      if (a < 0) a += kTwoPi;
+      const int b = std::min(bins - 1, static_cast<int>(a * to_bin_f));
+      reach[static_cast<std::size_t>(b)] = std::max(reach[static_cast<std::size_t>(b)], d2);
     }
+  }
+  for (float& d : reach) d = std::sqrt(d);
   std::size_t rays = 0;
   std::vector<RayEnd> ends(static_cast<std::size_t>(bins));
   for (int b = 0; b < bins; ++b) {
