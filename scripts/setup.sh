@@ -9,7 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(cmake g++ ninja-build pkg-config libpcl-dev libeigen3-dev libopencv-dev libyaml-cpp-dev
-  nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev lld
+  nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev libpng-dev lld
   libssl-dev chromium pybind11-dev python3-dev python3-numpy parallel)
 # libssl-dev: SHA-256 of the inputs (summary.json "provenance"); chromium: the headless-browser
 # test of report.html (tests/test_report_slow.cpp); pybind11-dev, python3-dev, python3-numpy: the

@@ -10,7 +10,7 @@
 #include "indoormap/layout/nav_map.hpp"
 #include "indoormap/layout/nearest_origin.hpp"
 #include "indoormap/layout/storeys.hpp"
-#include "nav_grids.hpp"
+#include "nav_map_fixtures.hpp"
 
 using namespace indoormap;
 using namespace indoormap::layout;

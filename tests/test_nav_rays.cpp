@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "indoormap/layout/nav_map.hpp"
-#include "nav_grids.hpp"
+#include "nav_map_fixtures.hpp"
 
 using namespace indoormap;
 using namespace indoormap::layout;

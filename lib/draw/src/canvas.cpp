@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "font.hpp"
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
+#include "indoormap/formats/png.hpp"
 
 namespace indoormap::draw {
 
@@ -117,12 +117,12 @@ void LegendTable::draw(cv::Mat& img, int y0_px) const {
   }
 }
 
-void write_png(const std::filesystem::path& path, const cv::Mat& img,
-               const std::vector<int>& params) {
-  std::vector<unsigned char> png;
-  if (!cv::imencode(".png", img, png, params))
-    throw OutputError(path.string(), "PNG encoding failed");
-  write_file_atomic(path, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+void write_png(const std::filesystem::path& path, const cv::Mat& img, int level) {
+  if (img.depth() != CV_8U || !(img.channels() == 1 || img.channels() == 3))
+    throw OutputError(path.string(), "PNG encoding: not an 8-bit grey or colour picture");
+  write_file_atomic(
+      path, formats::encode_png({img.data, img.cols, img.rows, img.channels(), 8, img.step[0]},
+                                level, path.string()));
 }
 
 }  // namespace indoormap::draw

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <string>
 
@@ -131,7 +130,7 @@ void write_route_png(const std::filesystem::path& path, const formats::RouteRepo
   legend.swatch(c_start, "start");
   legend.swatch(c_goal, "goal");
   legend.scale_bar(static_cast<int>(std::lround(k / geo.cell_m())));
-  write_png(path, img, {cv::IMWRITE_PNG_COMPRESSION, 9});
+  write_png(path, img, 9);
 }
 
 }  // namespace indoormap::draw

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "font.hpp"
@@ -81,7 +80,7 @@ void write_scan_features_png(const std::filesystem::path& path, const laser::Las
   legend.swatch(kCorridor, "corridor");
   legend.item("laser", [&](cv::Rect r) { draw_cross(img, (r.tl() + r.br()) / 2, 6, kSensor); });
   legend.scale_bar(static_cast<int>(std::lround(px_per_m)));
-  write_png(path, img, {cv::IMWRITE_PNG_COMPRESSION, 9});
+  write_png(path, img, 9);
 }
 
 }  // namespace indoormap::draw

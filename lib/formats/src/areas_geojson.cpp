@@ -1,11 +1,9 @@
 #include "indoormap/formats/areas_geojson.hpp"
 
-#include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
-
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/formats/json.hpp"
+#include "indoormap/formats/png.hpp"
 #include "json_write.hpp"
 
 namespace indoormap::formats {
@@ -78,24 +76,25 @@ ordered_json areas_json(const areas::AreasResult& r) {
           {"reachable_components", r.reachable_components}};
 }
 
+// A label PNG larger than this is refused before it is decoded (as the maps' cell budget).
+constexpr std::int64_t kMaxLabelPixels = 400'000'000;
+
 void write_labels_png(const std::filesystem::path& path, const Grid<std::uint16_t>& labels) {
-  cv::Mat img(labels.height, labels.width, CV_16U);
+  std::vector<std::uint16_t> img(labels.data.size());
   for (int r = 0; r < labels.height; ++r)
     for (int c = 0; c < labels.width; ++c)
-      img.at<std::uint16_t>(labels.height - 1 - r, c) = labels.at(c, r);
-  std::vector<unsigned char> bytes;
-  if (!cv::imencode(".png", img, bytes)) throw OutputError(path.string(), "PNG encoding failed");
-  write_file_atomic(path, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+      img[static_cast<std::size_t>(labels.height - 1 - r) * labels.width + c] = labels.at(c, r);
+  const std::size_t stride = static_cast<std::size_t>(labels.width) * 2;
+  write_file_atomic(
+      path, encode_png({img.data(), labels.width, labels.height, 1, 16, stride}, 1, path.string()));
 }
 
 Grid<std::uint16_t> read_labels_png(const std::filesystem::path& path) {
-  const cv::Mat img = cv::imread(path.string(), cv::IMREAD_ANYDEPTH | cv::IMREAD_GRAYSCALE);
-  if (img.empty()) throw InputError(path.string(), "not a readable PNG");
-  cv::Mat img16;
-  img.convertTo(img16, CV_16U);
-  Grid<std::uint16_t> g(img.cols, img.rows, 0);
-  for (int r = 0; r < img.rows; ++r)
-    for (int c = 0; c < img.cols; ++c) g.at(c, img.rows - 1 - r) = img16.at<std::uint16_t>(r, c);
+  const GreyImage img = read_png_grey(path, true, kMaxLabelPixels);
+  Grid<std::uint16_t> g(img.width, img.height, 0);
+  for (int r = 0; r < img.height; ++r)
+    for (int c = 0; c < img.width; ++c)
+      g.at(c, img.height - 1 - r) = img.pixels[static_cast<std::size_t>(r) * img.width + c];
   return g;
 }
 

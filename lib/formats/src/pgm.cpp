@@ -43,9 +43,10 @@ Grid<std::uint8_t> read_pgm(const fs::path& path, bool flip) {
   in.read(magic, 2);
   const auto got = in.gcount();  // before peek(), which resets it
   const int after = in.peek();
-  if (got < 2 || magic[0] != 'P' || magic[1] != '5' ||
+  const bool ascii = got == 2 && magic[1] == '2';
+  if (got < 2 || magic[0] != 'P' || !(magic[1] == '5' || magic[1] == '2') ||
       !(after == '#' || (after != EOF && std::isspace(after))))
-    throw InputError(path.string(), "not a binary PGM (P5) file");
+    throw InputError(path.string(), "not a PGM (P5 or P2) file");
   long long vals[3];
   for (auto& v : vals) {
     in >> std::ws;
@@ -60,25 +61,41 @@ Grid<std::uint8_t> read_pgm(const fs::path& path, bool flip) {
   if (w <= 0 || h <= 0 || w > 100000 || h > 100000 || w * h > 400'000'000LL)
     throw InputError(path.string(),
                      "PGM size " + std::to_string(w) + " x " + std::to_string(h) + " out of range");
-  if (maxval <= 0 || maxval > 255) throw InputError(path.string(), "only 8-bit PGM is supported");
+  if (maxval <= 0 || maxval > 65535)
+    throw InputError(path.string(), "PGM maxval " + std::to_string(maxval) + " out of 1..65535");
   in.get();  // the single whitespace after maxval
-  // The pixels must be in the file before the grid is allocated for them.
+  // The pixels must be in the file before the grid is allocated for them: P5 has one or two
+  // bytes per pixel, P2 at least a digit and a separator.
+  const long long per_pixel = ascii || maxval > 255 ? 2 : 1;
   const auto data_start = static_cast<long long>(in.tellg());
   std::error_code ec;
   const auto file_size = static_cast<long long>(fs::file_size(path, ec));
   const long long present = !in || ec || data_start < 0 ? 0 : std::max(0LL, file_size - data_start);
-  if (present < w * h)
+  if (present + ascii < w * h * per_pixel)
     throw InputError(path.string(), "PGM data truncated: " + std::to_string(w) + " x " +
                                         std::to_string(h) + " pixels need " +
-                                        std::to_string(w * h) + " bytes, the file holds " +
-                                        std::to_string(present));
+                                        std::to_string(w * h * per_pixel - ascii) +
+                                        " bytes, the file holds " + std::to_string(present));
+  // Values other than 0..255 are scaled to it (a 16-bit or a 4-bit map image).
+  const auto to8 = [&](long long v) {
+    return static_cast<std::uint8_t>(
+        maxval == 255 ? v : (std::min(v, maxval) * 255 + maxval / 2) / maxval);
+  };
   Grid<std::uint8_t> g(static_cast<int>(w), static_cast<int>(h));
-  std::vector<char> row(static_cast<std::size_t>(w));
+  std::vector<unsigned char> row(static_cast<std::size_t>(w * per_pixel));
   for (long long r = 0; r < h; ++r) {
-    if (!in.read(row.data(), w)) throw InputError(path.string(), "PGM data truncated");
     const int gr = flip ? static_cast<int>(h - 1 - r) : static_cast<int>(r);
-    for (long long c = 0; c < w; ++c)
-      g.at(static_cast<int>(c), gr) = static_cast<std::uint8_t>(row[c]);
+    if (!ascii && !in.read(reinterpret_cast<char*>(row.data()), w * per_pixel))
+      throw InputError(path.string(), "PGM data truncated");
+    for (long long c = 0; c < w; ++c) {
+      long long v = 0;
+      if (ascii) {
+        if (!(in >> v) || v < 0) throw InputError(path.string(), "bad PGM pixel value");
+      } else {
+        v = per_pixel == 2 ? (row[2 * c] << 8 | row[2 * c + 1]) : row[c];
+      }
+      g.at(static_cast<int>(c), gr) = to8(v);
+    }
   }
   return g;
 }

@@ -4,13 +4,14 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
-#include <opencv2/imgcodecs.hpp>
+#include <opencv2/core.hpp>
 #include <sstream>
 
 #include "indoormap/core/atomic_file.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/core/input_file.hpp"
 #include "indoormap/formats/pgm.hpp"
+#include "indoormap/formats/png.hpp"
 
 namespace indoormap::formats {
 
@@ -156,14 +157,27 @@ cv::Mat decode_gray(const fs::path& image, std::int64_t max_cells) {
       w > max_cells / h)
     throw BudgetError(image.string() + ": map of " + std::to_string(w) + " x " + std::to_string(h) +
                       " cells is above the budget of " + std::to_string(max_cells) + " cells");
-  cv::Mat img;
-  try {
-    img = cv::imread(image.string(), cv::IMREAD_GRAYSCALE);
-  } catch (const cv::Exception& e) {
-    throw InputError(image.string(), "cannot decode the map image: " + e.msg);
+  cv::Mat img(static_cast<int>(h), static_cast<int>(w), CV_8U);
+  std::ifstream in(image, std::ios::binary);
+  const bool png = in.get() == 0x89;
+  in.close();
+  if (png) {
+    GreyImage g;
+    try {
+      g = read_png_grey(image, false, max_cells);
+    } catch (const InputError& e) {
+      throw InputError(image.string(), "cannot decode the map image (" + e.problem() + ")");
+    }
+    if (g.width != w || g.height != h)
+      throw InputError(image.string(), "cannot decode the map image");
+    for (std::size_t i = 0; i < g.pixels.size(); ++i)
+      img.data[i] = static_cast<std::uint8_t>(g.pixels[i]);
+  } else {
+    const Grid<std::uint8_t> g = read_pgm(image, false);
+    if (g.width != w || g.height != h)
+      throw InputError(image.string(), "cannot decode the map image");
+    std::copy(g.data.begin(), g.data.end(), img.data);
   }
-  if (img.empty() || img.cols != w || img.rows != h || img.type() != CV_8UC1)
-    throw InputError(image.string(), "cannot decode the map image");
   return img;
 }
 

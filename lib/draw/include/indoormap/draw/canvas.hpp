@@ -93,9 +93,8 @@ struct LegendTable {
   int blocks(int width_px) const;
 };
 
-/// Encodes img as PNG and writes it atomically; params go to cv::imencode (e.g.
-/// {cv::IMWRITE_PNG_COMPRESSION, 9}). Throws OutputError.
-void write_png(const std::filesystem::path& path, const cv::Mat& img,
-               const std::vector<int>& params = {});
+/// Encodes img (8-bit grey or BGR) as PNG (formats::encode_png; level: zlib's 0-9, 1 fast) and
+/// writes it atomically. Throws OutputError.
+void write_png(const std::filesystem::path& path, const cv::Mat& img, int level = 1);
 
 }  // namespace indoormap::draw
