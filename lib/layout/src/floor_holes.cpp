@@ -13,14 +13,29 @@ struct Component {
 
 }  // namespace
 
-std::int64_t fill_floor_holes(std::vector<NavState>& state, const std::vector<std::uint8_t>& drop,
-                              int w, int h, const HoleParams& params) {
+std::int64_t fill_floor_holes(std::vector<NavState>& state,
+                              const std::vector<std::uint8_t>& barrier_cells,
+                              const std::vector<std::uint8_t>& drop, int w, int h,
+                              const HoleParams& params) {
   if (w <= 0 || h <= 0) return 0;
+  // The barrier cells closed across gaps of up to barrier_gap_cells: a wall's face seen sparsely
+  // (a mobile scanner passing by) has such gaps, through which a gap of the floor's rings beside
+  // it joined the wall's unseen inside, and so the unseen world outside.
+  cv::Mat barrier(h, w, CV_8U);
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c)
+      barrier.at<std::uint8_t>(r, c) = barrier_cells[static_cast<std::size_t>(r) * w + c] != 0;
+  if (params.barrier_gap_cells > 0) {
+    const int k = 2 * ((params.barrier_gap_cells + 1) / 2) + 1;
+    cv::morphologyEx(barrier, barrier, cv::MORPH_CLOSE,
+                     cv::getStructuringElement(cv::MORPH_RECT, {k, k}));
+  }
   cv::Mat unknown(h, w, CV_8U);
   for (int r = 0; r < h; ++r)
     for (int c = 0; c < w; ++c)
       unknown.at<std::uint8_t>(r, c) =
-          state[static_cast<std::size_t>(r) * w + c] == NavState::kUnknown;
+          state[static_cast<std::size_t>(r) * w + c] == NavState::kUnknown &&
+          !barrier.at<std::uint8_t>(r, c);
   cv::Mat labels;
   const int n = cv::connectedComponents(unknown, labels, 4, CV_32S);
   std::vector<Component> comp(static_cast<std::size_t>(n));
@@ -39,7 +54,7 @@ std::int64_t fill_floor_holes(std::vector<NavState>& state, const std::vector<st
           continue;
         }
         const NavState s = state[static_cast<std::size_t>(rr) * w + cc];
-        if (s == NavState::kUnknown) continue;
+        if (s == NavState::kUnknown && !barrier.at<std::uint8_t>(rr, cc)) continue;
         ++k.border;
         k.free_border += s == NavState::kFree;
       }

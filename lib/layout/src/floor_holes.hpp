@@ -12,13 +12,19 @@ enum class NavState : std::uint8_t { kUnknown, kFree, kOccupied };
 struct HoleParams {
   double max_cells = 0.0;        ///< larger unknown components stay unknown
   double min_free_share = 0.75;  ///< of the component's border cells that are free
+  /// Unknown cells of the barrier, closed across gaps of this many cells, are no part of any
+  /// hole; they count as the holes' border that is not free. 0: the barrier as it is.
+  int barrier_gap_cells = 2;
 };
 
-/// Turns into free every 4-connected component of kUnknown cells of the w x h grid that does not
-/// touch the grid's edge, holds at most max_cells cells, has at least min_free_share of its
-/// border (the 4-neighbours outside it) free, and holds no cell with drop[i] set (points below
-/// the floor: a stairwell, a hole in the floor). Returns the cells made free.
-std::int64_t fill_floor_holes(std::vector<NavState>& state, const std::vector<std::uint8_t>& drop,
-                              int w, int h, const HoleParams& params);
+/// Turns into free every 4-connected component of kUnknown cells of the w x h grid, barrier cells
+/// (closed across barrier_gap_cells) left out, that does not touch the grid's edge, holds at
+/// most max_cells cells, has at least min_free_share of its border (the 4-neighbours outside it)
+/// free, and holds no cell with drop[i] set (points below the floor: a stairwell, a hole in the
+/// floor). Returns the cells made free.
+std::int64_t fill_floor_holes(std::vector<NavState>& state,
+                              const std::vector<std::uint8_t>& barrier,
+                              const std::vector<std::uint8_t>& drop, int w, int h,
+                              const HoleParams& params);
 
 }  // namespace indoormap::layout::detail

@@ -348,12 +348,28 @@ std::vector<std::uint8_t> raised_obstacles(const Columns& col, const cloud::Voxe
 // shaft) shows what lies below it; such a gap in the floor's returns is no floor hole to fill.
 constexpr double kDropM = 0.3;
 
-std::vector<std::uint8_t> drops(const cloud::VoxelGrid& g, double floor_z_m) {
+std::vector<std::uint8_t> drops(const cloud::VoxelGrid& g, double floor_z_m,
+                                const std::vector<std::uint8_t>& floor_seen) {
   std::vector<std::uint8_t> d(static_cast<std::size_t>(g.layer_size()), 0);
   const std::int64_t top = std::min<std::int64_t>(g.nz, g.layer_of(floor_z_m - kDropM));
   for (std::int64_t z = 0; z < top; ++z) {
     const std::uint16_t* layer = g.counts.data() + g.index(0, 0, z);
     for (std::size_t i = 0; i < d.size(); ++i) d[i] |= layer[i] != 0;
+  }
+  // A piece of such columns (8-connected) whose floor was mostly seen lies under a solid floor:
+  // the ceiling of a taller room of the storey below, seen from there (a two-storey building's
+  // upper storey begins between the lower storey's ceilings), not a hole.
+  cv::Mat m(static_cast<int>(g.ny), static_cast<int>(g.nx), CV_8U, d.data()), labels;
+  const int n = cv::connectedComponents(m, labels, 8, CV_32S);
+  std::vector<std::int64_t> cells(static_cast<std::size_t>(n), 0), seen(cells.size(), 0);
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    const auto l = static_cast<std::size_t>(labels.at<int>(static_cast<int>(i)));
+    ++cells[l];
+    seen[l] += floor_seen[i] != 0;
+  }
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    const auto l = static_cast<std::size_t>(labels.at<int>(static_cast<int>(i)));
+    if (d[i] && 2 * seen[l] >= cells[l]) d[i] = 0;
   }
   return d;
 }
@@ -362,7 +378,7 @@ std::vector<std::uint8_t> drops(const cloud::VoxelGrid& g, double floor_z_m) {
 
 NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
                         const std::vector<Eigen::Vector3d>& scanners, const NavParams& p,
-                        bool veils_cleared) {
+                        bool veils_cleared, const Grid<std::uint8_t>* above) {
   validate(p);
   NavResult r;
   const GridGeometry geo = g.geometry2d();
@@ -435,8 +451,16 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
       ++r.cells_shadow_filled;
     }
   const double cell_m2 = geo.cell_m() * geo.cell_m();
+  // The holes' barrier: the occupied cells and the wall band's cells (a wall whose foot the
+  // furniture hid); without positions also the furniture band's (no ray crossed the pockets
+  // beside furniture: an unseen cabinet's body would otherwise be a hole of the floor).
+  const bool have = above && above->data.size() == state.size();
+  const std::uint8_t stop = r.positions ? kAboveWall : kAboveWall | kAboveFurniture;
+  std::vector<std::uint8_t> barrier(state.size(), 0);
+  for (std::size_t i = 0; i < state.size(); ++i)
+    barrier[i] = state[i] == detail::NavState::kOccupied || (have && (above->data[i] & stop));
   r.cells_hole_filled = detail::fill_floor_holes(
-      state, drops(g, floor_z_m), w, h,
+      state, barrier, drops(g, floor_z_m, col.floor_seen), w, h,
       {p.floor_hole_max_m2 / cell_m2,
        r.positions ? p.floor_hole_min_free_share : p.floor_hole_min_free_share_no_rays});
   r.over_low = Grid<std::uint8_t>(w, h, 0);
