@@ -1,5 +1,6 @@
 #include "floor_holes.hpp"
 
+#include <algorithm>
 #include <opencv2/imgproc.hpp>
 
 namespace indoormap::layout::detail {
@@ -12,6 +13,22 @@ struct Component {
 };
 
 }  // namespace
+
+std::vector<std::uint8_t> hole_barrier(const std::vector<NavState>& state,
+                                       const cloud::VoxelGrid& g,
+                                       const std::vector<std::uint8_t>& walls,
+                                       const WallProof& proof) {
+  const std::int64_t w = g.nx, z0 = std::max<std::int64_t>(0, proof.lo_layer),
+                     z1 = std::min<std::int64_t>(g.nz - 1, proof.hi_layer);
+  std::vector<std::uint8_t> barrier(state.size(), 0);
+  for (std::size_t i = 0; i < state.size(); ++i) {
+    barrier[i] = state[i] == NavState::kOccupied;
+    if (barrier[i] || walls.empty() || !walls[i]) continue;
+    const std::int64_t x = static_cast<std::int64_t>(i) % w, y = static_cast<std::int64_t>(i) / w;
+    for (std::int64_t z = z0; z <= z1 && !barrier[i]; ++z) barrier[i] = g.count(x, y, z) != 0;
+  }
+  return barrier;
+}
 
 std::int64_t fill_floor_holes(std::vector<NavState>& state,
                               const std::vector<std::uint8_t>& barrier_cells,

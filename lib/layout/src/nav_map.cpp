@@ -378,7 +378,7 @@ std::vector<std::uint8_t> drops(const cloud::VoxelGrid& g, double floor_z_m,
 
 NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
                         const std::vector<Eigen::Vector3d>& scanners, const NavParams& p,
-                        bool veils_cleared, const Grid<std::uint8_t>* above) {
+                        bool veils_cleared, const Grid<std::uint8_t>* walls) {
   validate(p);
   NavResult r;
   const GridGeometry geo = g.geometry2d();
@@ -451,14 +451,10 @@ NavResult build_nav_map(const cloud::VoxelGrid& g, double floor_z_m,
       ++r.cells_shadow_filled;
     }
   const double cell_m2 = geo.cell_m() * geo.cell_m();
-  // The holes' barrier: the occupied cells and the wall band's cells (a wall whose foot the
-  // furniture hid); without positions also the furniture band's (no ray crossed the pockets
-  // beside furniture: an unseen cabinet's body would otherwise be a hole of the floor).
-  const bool have = above && above->data.size() == state.size();
-  const std::uint8_t stop = r.positions ? kAboveWall : kAboveWall | kAboveFurniture;
-  std::vector<std::uint8_t> barrier(state.size(), 0);
-  for (std::size_t i = 0; i < state.size(); ++i)
-    barrier[i] = state[i] == detail::NavState::kOccupied || (have && (above->data[i] & stop));
+  const std::vector<std::uint8_t> barrier = detail::hole_barrier(
+      state, g,
+      walls && walls->data.size() == state.size() ? walls->data : std::vector<std::uint8_t>{},
+      {g.layer_of(r.body_hi_m), g.layer_of(floor_z_m + detail::kDoorOpenM)});
   r.cells_hole_filled = detail::fill_floor_holes(
       state, barrier, drops(g, floor_z_m, col.floor_seen), w, h,
       {p.floor_hole_max_m2 / cell_m2,

@@ -228,12 +228,8 @@ void map_voxelized(PointCloud cloud, const MapParams& params, MapResult& r) {
   std::vector<Eigen::Vector2d> seeds;
   for (const auto& s : cloud.scanners) seeds.emplace_back(s.x(), s.y());
   // The navigation map first: its free cells (observed floor, rays) are the layout's evidence.
-  Grid<std::uint8_t> above(r.walls.width, r.walls.height, 0);  // the floor holes' barrier
-  for (std::size_t i = 0; i < above.size(); ++i)
-    above.data[i] = static_cast<std::uint8_t>((r.walls.data[i] ? kAboveWall : 0) |
-                                              (r.furniture.data[i] ? kAboveFurniture : 0));
   r.nav = build_nav_map(r.voxels, r.layers.floor_z_m, cloud.scanners, params.nav,
-                        r.ghost_origins_exact, &above);
+                        r.ghost_origins_exact, &r.walls);
   for (const auto& w : r.nav.warnings) r.warnings.push_back(w);
   r.timings.push_back({"nav_map", sw.lap_ms()});
   // Only for a sparse scan (LayoutParams::sparse_floor_fill): on a dense one the rule cost

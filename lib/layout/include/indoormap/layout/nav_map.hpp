@@ -86,10 +86,6 @@ struct NavParams {
 /// Throws UsageError naming the key (robot.height_m, nav.min_points, ...).
 void validate(const NavParams& params);
 
-/// build_nav_map's `above` cells: where the layout's wall band (M_w) and furniture band (M_f)
-/// hold points.
-enum AboveBits : std::uint8_t { kAboveWall = 1, kAboveFurniture = 2 };
-
 struct NavResult;
 /// The map with the cells free only from the beams over low obstacles unknown: the rooms' input.
 /// Beside a table that floor and an unseen patch would make a neck the room split takes for a
@@ -120,12 +116,12 @@ struct NavResult {
 /// floor height floor_z_m. scanners_map: positions in the map frame (any number, also none).
 /// veils_cleared: the ghost filter ran with every point's own origin, so no veil of mixed pixels
 /// is left in the doorways; otherwise (no position, origins estimated from a trajectory) the seen
-/// floor below a column stands in for it (docs/pipeline.md, "Specks"). above: per cell, the
-/// AboveBits of the layout's bands (M_w, M_f), or null; they bound the floor holes: a wall whose
-/// foot the furniture hid, and without positions the furniture (docs/pipeline.md, "Floor holes").
+/// floor below a column stands in for it (docs/pipeline.md, "Specks"). walls: the layout's wall
+/// band cells (M_w), or null: a wall whose foot something hid still bounds the floor holes, a
+/// doorway's lintel does not (docs/pipeline.md, "Floor holes").
 NavResult build_nav_map(const cloud::VoxelGrid& voxels, double floor_z_m,
                         const std::vector<Eigen::Vector3d>& scanners_map,
                         const NavParams& params = {}, bool veils_cleared = false,
-                        const Grid<std::uint8_t>* above = nullptr);
+                        const Grid<std::uint8_t>* walls = nullptr);
 
 }  // namespace indoormap::layout
