@@ -1,12 +1,15 @@
 // M_r's walls between rooms and its flood on a floor (issue 16): the inside of a wall between two
 // rooms, a wall with one face in the furniture band, the rooms of a floor scanned without
-// positions.
+// positions, the unseen body of a shelf taller than the scanner.
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
 #include "indoormap/layout/layout.hpp"
+#include "indoormap/layout/pipeline.hpp"
+#include "indoormap/sim/scene.hpp"
+#include "indoormap/sim/simulate.hpp"
 #include "layout_fixtures.hpp"
 
 // Issue 16: two rooms with a wall 0.4 m thick between them (faces seen, inside not) and a
@@ -103,4 +106,72 @@ TEST(Layout, WithoutPositionsEveryRoomWithSeenFloorIsFlooded) {
     for (int row = 1; row < 13; ++row) seen.at(col, row) = row == 6 && col < 40;
   const LayoutResult s = build_layout(walls, furn, geo, {}, {}, nullptr, nullptr, &seen);
   EXPECT_EQ(s.layout.at(10, 6) == Cell::kFree, s.layout.at(30, 6) != Cell::kFree);
+}
+
+namespace {
+
+// A 4 m x 3 m room (walls 0.2 m, ceiling 2.5 m) scanned from (1.0, 1.0, 1.2) at 0.5 degrees,
+// with a shelf 1.8 m tall, 0.4 m deep and 1.2 m long against the east wall (x 3.58 - 3.98,
+// y 1.3 - 2.5) and a cabinet 1.8 m tall standing free 1 m from the walls, whose shadow hides the
+// shelf's face north of y = 2; no noise, no tilt, no mixed pixels. The scanner sees the shelf's
+// face south of that and its south end, never its north end nor its top.
+layout::MapResult room_with_a_tall_shelf(double hidden_body_max_depth_m) {
+  sim::Scene s;
+  sim::Room room;
+  room.name = "room";
+  room.polygon = {{0, 0}, {4, 0}, {4, 3}, {0, 3}};
+  room.wall_thickness_m = 0.2;
+  room.ceiling.height_m = 2.5;
+  s.rooms.push_back(room);
+  sim::ScannerPose pose;
+  pose.position_m = {1.0, 1.0, 1.2};
+  s.scanners.push_back(pose);
+  s.scanner.range_sigma_m = 0;
+  s.scanner.mixed_pixel_probability = 0;
+  s.scanner.azimuth_step_deg = 0.5;
+  s.scanner.elevation_step_deg = 0.5;
+  for (const auto& [c, size] : {std::pair{Eigen::Vector2d(3.78, 1.9), Eigen::Vector2d(0.4, 1.2)},
+                                std::pair{Eigen::Vector2d(2.6, 1.95), Eigen::Vector2d(0.3, 0.3)}}) {
+    sim::Furniture f;
+    f.type = sim::FurnitureType::kShelf;
+    f.center_m = c;
+    f.size_m = size;
+    f.height_m = 1.8;
+    s.furniture.push_back(f);
+  }
+  const sim::SimResult r = sim::simulate(sim::normalised(s));
+  layout::MapParams p;
+  p.layout.hidden_body_max_depth_m = hidden_body_max_depth_m;
+  return layout::make_map(PointCloud{r.points, r.scanner_positions_m, {}}, p);
+}
+
+Cell cell_at(const layout::MapResult& m, double x, double y) {
+  return m.layout.layout.at(m.geometry.cell_of({x, y}));
+}
+
+}  // namespace
+
+// A dense scan sees a shelf taller than the scanner as its front face only. The paper's flood ran
+// in through the cabinet's shadow, round the unseen part of the face, and called the shelf's body
+// free; the body between the seen face and the wall behind it, whose floor the scan never saw, is
+// the shelf's (a pocket: furniture). The cabinet's shadow, farther from the walls, stays as it
+// was: the scan cannot tell that cabinet's depth.
+TEST(Layout, TheUnseenBodyOfATallShelfAgainstAWallIsFurniture) {
+  const layout::MapResult on = room_with_a_tall_shelf(0.7);
+  const layout::MapResult off = room_with_a_tall_shelf(0.0);
+  ASSERT_EQ(on.geometry, off.geometry);
+  int body_on = 0, body_off = 0, cells = 0;
+  for (double y = 1.4; y <= 1.85; y += 0.05)
+    for (double x = 3.65; x <= 3.9; x += 0.05) {
+      ++cells;
+      body_on += cell_at(on, x, y) == Cell::kFurniture;
+      body_off += cell_at(off, x, y) == Cell::kFurniture;
+    }
+  EXPECT_EQ(body_on, cells);
+  EXPECT_LT(body_off, cells / 2);  // the leak the rule closes
+  // The cabinet's shadow is not made furniture.
+  for (const auto& [x, y] : {std::pair{3.1, 2.3}, std::pair{3.3, 2.6}}) {
+    EXPECT_EQ(cell_at(on, x, y), cell_at(off, x, y));
+    EXPECT_NE(cell_at(on, x, y), Cell::kFurniture);
+  }
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <limits>
 #include <opencv2/imgproc.hpp>
 
 #include "ghost_reference.hpp"
@@ -78,6 +79,36 @@ TEST(JacobsPipeline, GhostFilterRemovesWhatTheRayWalkingReferenceRemoves) {
   EXPECT_GT(b.voxels_removed, 100);
   EXPECT_EQ(a.rays, b.rays);
   EXPECT_LE(differ, static_cast<std::size_t>(b.voxels_removed) / 1000);
+}
+
+// A storey's slice of a building holds points seen from another storey's positions, which it does
+// not list: their origin is unknown. The filter runs with the rays it knows (those points cast
+// none) and counts as exact while they are at most a tenth of the cloud; beyond, it still runs
+// and says what share it could not trace. Before, any unknown origin skipped it.
+TEST(JacobsPipeline, GhostFilterRunsWithTheRaysWhoseOriginIsKnown) {
+  REQUIRE_JACOBS();
+  PointCloud c = J->loaded.cloud;
+  ASSERT_EQ(c.origins.size(), 9u);  // the nine sector files, one position
+  c.scanners.push_back(c.scanners[0] + Eigen::Vector3d(5.0, 0.0, 0.0));  // two positions listed
+  const std::size_t unknown = std::numeric_limits<std::size_t>::max();
+  const auto run = [&](double unknown_share) {
+    PointCloud x = c;
+    // The last sector's span, or its tail, from a position the cloud does not list.
+    auto& last = x.origins.back();
+    const auto n = static_cast<std::size_t>(unknown_share * static_cast<double>(x.points.size()));
+    ASSERT_LE(n, last.count);
+    last.count -= n;
+    x.origins.push_back({last.first + last.count, n, unknown});
+    const layout::MapResult m = layout::make_map(std::move(x), {});
+    EXPECT_TRUE(m.ghosts.applied);
+    EXPECT_GT(m.ghosts.voxels_removed, 100);
+    EXPECT_EQ(m.ghost_origins_exact, unknown_share <= 0.1);
+    bool warned = false;
+    for (const auto& w : m.warnings) warned = warned || w.find("their rays not traced") != w.npos;
+    EXPECT_EQ(warned, unknown_share > 0.1) << unknown_share;
+  };
+  run(0.05);
+  run(0.11);
 }
 
 TEST(JacobsPipeline, LevellingPutsFloorAndCeilingIntoOneOrTwoLayers) {

@@ -122,6 +122,7 @@ void visit(PipelineConfig& c, F&& f) {
   f("layout", "hanging_max_area_m2", lo.hanging_max_area_m2);
   f("layout", "hanging_max_extent_m", lo.hanging_max_extent_m);
   f("layout", "wall_max_thickness_m", lo.wall_max_thickness_m);
+  f("layout", "hidden_body_max_depth_m", lo.hidden_body_max_depth_m);
   f("layout", "hanging_gap_m", lo.hanging_gap_m);
   f("layout", "free_needs_evidence", lo.free_needs_evidence);
   f("layout", "sparse_floor_fill", lo.sparse_floor_fill);

@@ -167,6 +167,8 @@ void validate(const LayoutParams& lo) {
   require(lo.hanging_gap_m > 0, "layout.hanging_gap_m: must be > 0");
   require(lo.wall_max_thickness_m >= 0 && lo.wall_max_thickness_m <= 2,
           "layout.wall_max_thickness_m: must be in [0, 2]");
+  require(lo.hidden_body_max_depth_m >= 0 && lo.hidden_body_max_depth_m <= 2,
+          "layout.hidden_body_max_depth_m: must be in [0, 2]");
   require(lo.hanging_max_extent_m >= 0, "layout.hanging_max_extent_m: must be >= 0");
 }
 

@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 #include <span>
 
+#include "hidden_bodies.hpp"
 #include "indoormap/layout/nearest_origin.hpp"
 #include "stopwatch.hpp"
 
@@ -14,6 +15,12 @@ namespace indoormap::layout {
 namespace {
 
 using detail::Stopwatch;
+
+// The share of points without a known scanner up to which the ghost filter by origin still counts
+// as exact (ghost_origins_exact): the upper storey's slice of a two-storey building holds 5 % of
+// such points, the ceilings of the taller rooms below seen from their own positions, under its
+// floor and far from the body band the exactness matters for.
+constexpr double kMaxUnknownOriginShare = 0.1;
 
 // Rays need the scanner each point came from: one scanner sees everything; several need the
 // cloud's origin spans; where the input has none (a merged cloud with --scanner, a trajectory),
@@ -50,13 +57,23 @@ void run_ghost_filter(const PointCloud& cloud, const cloud::GhostParams& params,
     sources.push_back({all.subspan(o.first, o.count), cloud.scanners[o.scanner]});
     covered += o.count;
   }
-  if (covered == cloud.points.size() && !sources.empty()) {
-    r.ghosts = cloud::remove_ghost_voxels_by_origin(r.voxels, sources, params);
-    r.ghost_origins_exact = r.ghosts.applied;
+  // Points of unknown origin (in a storey's slice, those seen from another storey's positions)
+  // cast no ray: they add no evidence of free space, so the filter clears
+  // no voxel because of them. With most of the rays known it is still the exact filter.
+  if (sources.empty()) {
+    r.warnings.push_back("ghost filter skipped: " + std::to_string(cloud.scanners.size()) +
+                         " scanner positions and the origin of every point unknown");
     return;
   }
-  r.warnings.push_back("ghost filter skipped: " + std::to_string(cloud.scanners.size()) +
-                       " scanner positions and the origin of some points unknown");
+  r.ghosts = cloud::remove_ghost_voxels_by_origin(r.voxels, sources, params);
+  const double unknown = 1.0 - static_cast<double>(covered) / static_cast<double>(all.size());
+  r.ghost_origins_exact = r.ghosts.applied && unknown <= kMaxUnknownOriginShare;
+  if (r.ghosts.applied && !r.ghost_origins_exact) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.0f%%", 100.0 * unknown);
+    r.warnings.push_back(std::string("ghost filter: the origin of ") + buf +
+                         " of the points unknown; their rays not traced");
+  }
 }
 
 // A single position with no origin spans is taken as the origin of every point (rays, ghost
@@ -77,6 +94,22 @@ void drop_implausible_viewpoint(PointCloud& cloud, const ViewpointCheckParams& p
                        "(no rays, no ghost filter; give --trajectory for a mobile scan)");
   cloud.scanners.clear();
   r.viewpoint_dropped = true;
+}
+
+// Furniture with points above the lowest scanner position less 0.1 m: no scanner saw its top
+// (LayoutParams::hidden_body_max_depth_m). Empty without scanner positions.
+Grid<std::uint8_t> tall_furniture(const MapResult& r, const std::vector<Eigen::Vector3d>& scanners,
+                                  const cloud::LayerParams& lp) {
+  if (scanners.empty()) return {};
+  double eye = scanners.front().z();
+  for (const auto& s : scanners) eye = std::min(eye, s.z());
+  cloud::HeightBand band = r.layers.furniture_band;
+  band.lo_layer = std::max(band.lo_layer, r.voxels.layer_of(eye - 0.1));
+  if (band.hi_layer < band.lo_layer) return {};
+  Grid<std::uint8_t> tall =
+      cloud::project_band(r.voxels, band, lp.min_points_per_voxel, lp.isolated_min_points);
+  for (std::size_t i = 0; i < tall.size(); ++i) tall.data[i] &= r.furniture.data[i];
+  return tall;
 }
 
 // Clears every 8-connected piece of the low wall band's mask that is shorter than min_cells on
@@ -241,8 +274,20 @@ void map_voxelized(PointCloud cloud, const MapParams& params, MapResult& r) {
   r.free_from_evidence =
       params.layout.free_needs_evidence && (r.floor_fill < params.layout.sparse_floor_fill ||
                                             (cloud.scanners_on_path && !cloud.scanners.empty()));
+  // On a dense scan the flood runs everywhere but into the unseen bodies of tall furniture.
+  Grid<std::uint8_t> not_hidden;
+  if (!r.free_from_evidence && params.layout.free_needs_evidence) {
+    not_hidden = detail::hidden_bodies(evidence, tall_furniture(r, cloud.scanners, lp), r.walls,
+                                       r.geometry.cell_m(), params.layout.hidden_body_max_depth_m);
+    bool any = false;
+    for (auto& v : not_hidden.data) any = any || v, v = !v;
+    if (!any) not_hidden = {};
+  }
+  const Grid<std::uint8_t>* flood_evidence = r.free_from_evidence ? &evidence
+                                             : not_hidden.size()  ? &not_hidden
+                                                                  : nullptr;
   r.layout = build_layout(r.walls, r.furniture, r.geometry, seeds, params.layout, &support,
-                          r.free_from_evidence ? &evidence : nullptr, &evidence);
+                          flood_evidence, &evidence);
   for (const auto& w : r.layout.warnings) r.warnings.push_back(w);
   r.timings.push_back({"layout", sw.lap_ms()});
   r.cloud_map = std::move(cloud);

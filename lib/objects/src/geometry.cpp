@@ -113,7 +113,47 @@ std::vector<Eigen::Vector2d> outline(const Grid<std::int32_t>& labels, int id, C
   return poly;
 }
 
-// Algebraic (Kasa) circle fit: x^2 + y^2 + D x + E y + F = 0 in least squares.
+namespace {
+
+double circle_rms(const std::vector<Eigen::Vector2d>& pts, const Eigen::Vector2d& centre,
+                  double radius) {
+  double ss = 0.0;
+  for (const auto& p : pts) ss += std::pow((p - centre).norm() - radius, 2);
+  return std::sqrt(ss / static_cast<double>(pts.size()));
+}
+
+// Gauss-Newton on the geometric distances |p - centre| - radius, from the algebraic fit: on a
+// short arc (the third of a pillar's ring one position sees) the algebraic fit comes out a cell
+// small (0.251 m for a 0.281 m pillar, 0.275 m after this). Kept only where it lowers the RMS.
+void refine_circle(const std::vector<Eigen::Vector2d>& pts, Circle& c) {
+  Eigen::Vector2d centre = c.center;
+  double radius = c.radius;
+  for (int it = 0; it < 20; ++it) {
+    Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
+    for (const auto& p : pts) {
+      const Eigen::Vector2d d = p - centre;
+      const double n = d.norm();
+      if (n <= 1e-12) return;
+      const Eigen::Vector3d j(-d.x() / n, -d.y() / n, -1.0);
+      jtj += j * j.transpose();
+      jtr += j * (n - radius);
+    }
+    const Eigen::Vector3d step = jtj.ldlt().solve(-jtr);
+    if (!step.allFinite()) return;
+    centre += step.head<2>();
+    radius += step[2];
+    if (step.norm() < 1e-9) break;
+  }
+  if (!(radius > 0) || !centre.allFinite()) return;
+  const double rms = circle_rms(pts, centre, radius);
+  if (rms < c.rms) c.center = centre, c.radius = radius, c.rms = rms;
+}
+
+}  // namespace
+
+// Algebraic (Kasa) circle fit (x^2 + y^2 + D x + E y + F = 0 in least squares), refined
+// geometrically.
 std::optional<Circle> fit_circle(const std::vector<Eigen::Vector2d>& pts) {
   if (pts.size() < 5) return std::nullopt;
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
@@ -134,9 +174,8 @@ std::optional<Circle> fit_circle(const std::vector<Eigen::Vector2d>& pts) {
   const double r2 = x[0] * x[0] / 4 + x[1] * x[1] / 4 - x[2];
   if (!(r2 > 0)) return std::nullopt;
   c.radius = std::sqrt(r2);
-  double ss = 0.0;
-  for (const auto& p : pts) ss += std::pow((p - c.center).norm() - c.radius, 2);
-  c.rms = std::sqrt(ss / static_cast<double>(pts.size()));
+  c.rms = circle_rms(pts, c.center, c.radius);
+  refine_circle(pts, c);
   return c;
 }
 

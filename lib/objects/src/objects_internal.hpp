@@ -145,7 +145,8 @@ struct Circle {
   double radius = 0.0, rms = 0.0;
 };
 
-// Algebraic (Kasa) circle fit: x^2 + y^2 + D x + E y + F = 0 in least squares.
+// Circle fit: algebraic (Kasa: x^2 + y^2 + D x + E y + F = 0 in least squares), then refined on
+// the geometric distances where that lowers their RMS.
 std::optional<Circle> fit_circle(const std::vector<Eigen::Vector2d>& pts);
 
 // Pillars and columns: wall-class components that stand free in the room (few unknown cells

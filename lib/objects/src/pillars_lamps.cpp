@@ -13,12 +13,11 @@ namespace {
 // the room's outer wall, not a pillar standing in the room.
 constexpr double kPillarMaxUnknownShare = 0.25;
 // A pillar's seen face is round when the circle fitted to its cell centres stays this close to
-// them (in cells). The corner of a square pillar leaves as little (0.49 cells for two faces of 8
-// cells), so flat faces are recognised first (kPillarFlatShare).
+// them (in cells) and closer than the sides of its minimum-area rectangle do. The corner of a
+// square pillar leaves 0.49 cells from a circle (two faces of 8 cells) and none from its
+// rectangle; a third of a round pillar's ring, seen from one position, is thin: most of its cells
+// touch its rectangle's border too, but its middle lies a cell or two inside the long side.
 constexpr double kPillarCircleMaxRmsCells = 0.5;
-// A pillar's seen face is flat (one or two faces of a square pillar) when this share of its cells
-// lies within a cell of its minimum-area rectangle's border; half a ring has about half there.
-constexpr double kPillarFlatShare = 0.85;
 // A lamp hangs: at least this much empty space below its lowest point in every one of its columns.
 constexpr double kLampMinClearance_m = 0.2;
 // Wall components smaller than this (cells) are a lamp's cords, not walls.
@@ -145,19 +144,20 @@ void add_pillars(const Grid<Cell>& layout, const GridGeometry& geo, const cloud:
     }
     const OrientedBox rect = min_area_box(corners);
     const auto [ru, rv] = box_axes(rect);
-    std::size_t on_border = 0;
+    // RMS distance of the cell centres to the nearest side of the rectangle (centres lie half a
+    // cell inside it).
+    double ss_rect = 0.0;
     for (const auto& p : centres) {
       const Eigen::Vector2d q = p - rect.center_m;
       const double to_border = std::min(0.5 * rect.length_m - std::abs(q.dot(ru)),
                                         0.5 * rect.width_m - std::abs(q.dot(rv)));
-      on_border += to_border <= cell;
+      ss_rect += std::pow(std::max(0.0, to_border - 0.5 * cell), 2);
     }
-    const bool flat =
-        static_cast<double>(on_border) >= kPillarFlatShare * static_cast<double>(centres.size());
-    const auto circle = flat ? std::nullopt : fit_circle(centres);
+    const double rect_rms = std::sqrt(ss_rect / static_cast<double>(centres.size()));
+    const auto circle = fit_circle(centres);
     const double extent = std::max(bw, bh) * cell;
-    if (circle && circle->rms <= kPillarCircleMaxRmsCells * cell && circle->radius >= cell &&
-        circle->radius <= extent) {
+    if (circle && circle->rms <= kPillarCircleMaxRmsCells * cell && circle->rms < rect_rms &&
+        circle->radius >= cell && circle->radius <= extent) {
       // The fit runs through the centres of the face cells: the surface lies inside them.
       const double radius = circle->radius;
       constexpr int kVertices = 32;
