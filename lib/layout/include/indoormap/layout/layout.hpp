@@ -66,12 +66,13 @@ struct LayoutParams {
   /// 0.74-0.85 at the default 0.25 degree step, 0.4-0.5 at 1 degree, 0.2 at 2). On dense scans it
   /// cost object precision (shadows behind chairs became furniture). 1.01: always; 0: never.
   double sparse_floor_fill = 0.6;
-  /// The unseen body of furniture taller than the scanner (make_map; a dense scan sees a tall
-  /// shelf as its front face, and the paper's flood ran in round its unseen end and called its
-  /// body free): passage cells whose floor the scan did not see, within this depth of furniture
-  /// with points above the lowest scanner position less 0.1 m and within it of a wall, are not
-  /// flooded; they become a pocket of that furniture. The deepest simulated cabinet is 0.6 m.
-  /// Needs scanner positions. 0: off.
+  /// The unseen body of furniture taller than the scanner (make_map, dense scans; a dense scan
+  /// sees a tall shelf as its front face, and the paper's flood ran in round its unseen end and
+  /// called its body free): from each furniture cell with points above the lowest scanner
+  /// position less 0.1 m whose nearest wall lies within this depth, the cells on the straight
+  /// line to that wall are not flooded when the scan saw the floor of none of them; they become
+  /// a pocket of that furniture. The deepest simulated cabinet is 0.6 m. Needs scanner
+  /// positions and free_needs_evidence. 0: off.
   double hidden_body_max_depth_m = 0.7;
 };
 
