@@ -324,6 +324,25 @@ std::vector<std::int64_t> blocks_per_layer(const VoxelGrid& g, std::uint16_t min
 
 }  // namespace
 
+double floor_fill(const VoxelGrid& v, std::int64_t floor_layer) {
+  const std::int64_t b = std::max<std::int64_t>(1, std::lround(0.2 / v.cell_m));
+  const std::int64_t bw = (v.nx + b - 1) / b, bh = (v.ny + b - 1) / b;
+  std::vector<std::uint8_t> block(static_cast<std::size_t>(bw * bh), 0);
+  std::int64_t cells = 0;
+  for (std::int64_t y = 0; y < v.ny; ++y)
+    for (std::int64_t x = 0; x < v.nx; ++x) {
+      bool hit = false;
+      for (std::int64_t z = std::max<std::int64_t>(0, floor_layer - 1);
+           z <= std::min(v.nz - 1, floor_layer + 1) && !hit; ++z)
+        hit = v.counts[static_cast<std::size_t>((z * v.ny + y) * v.nx + x)] > 0;
+      if (!hit) continue;
+      ++cells;
+      block[static_cast<std::size_t>((y / b) * bw + x / b)] = 1;
+    }
+  const auto blocks = std::count(block.begin(), block.end(), 1);
+  return blocks ? static_cast<double>(cells) / static_cast<double>(blocks * b * b) : 1.0;
+}
+
 LayerAnalysis analyse_layers(const VoxelGrid& g, const LayerParams& p) {
   validate(p);
   LayerAnalysis a;

@@ -146,28 +146,6 @@ void drop_hanging_pieces(Grid<std::uint8_t>& mask, const cloud::VoxelGrid& g,
         mask.data[static_cast<std::size_t>(r) * mask.width + c] = 0;
 }
 
-// The share of the cells of the floor's 0.2 m blocks (4 x 4 cells of 5 cm) that hold floor
-// points (the floor layer and its neighbours): 0.74-0.85 at the default 0.25 degree step,
-// 0.4-0.5 at 1 degree, about 0.2 at 2 degrees.
-double floor_fill(const cloud::VoxelGrid& v, std::int64_t floor_layer) {
-  const std::int64_t b = std::max<std::int64_t>(1, std::lround(0.2 / v.cell_m));
-  const std::int64_t bw = (v.nx + b - 1) / b, bh = (v.ny + b - 1) / b;
-  std::vector<std::uint8_t> block(static_cast<std::size_t>(bw * bh), 0);
-  std::int64_t cells = 0;
-  for (std::int64_t y = 0; y < v.ny; ++y)
-    for (std::int64_t x = 0; x < v.nx; ++x) {
-      bool hit = false;
-      for (std::int64_t z = std::max<std::int64_t>(0, floor_layer - 1);
-           z <= std::min(v.nz - 1, floor_layer + 1) && !hit; ++z)
-        hit = v.counts[static_cast<std::size_t>((z * v.ny + y) * v.nx + x)] > 0;
-      if (!hit) continue;
-      ++cells;
-      block[static_cast<std::size_t>((y / b) * bw + x / b)] = 1;
-    }
-  const auto blocks = std::count(block.begin(), block.end(), 1);
-  return blocks ? static_cast<double>(cells) / static_cast<double>(blocks * b * b) : 1.0;
-}
-
 }  // namespace
 
 void validate(const MapParams& params) {
@@ -269,7 +247,7 @@ void map_voxelized(PointCloud cloud, const MapParams& params, MapResult& r) {
   // object precision (seeds 21-40: 0.82 to 0.77) for nothing. And for a moving scanner's path:
   // its beams leave the ends and tops of cabinets unseen, the flood ran in through them, while
   // the rays from along its path show the free floor (docs/pipeline.md, step 5).
-  r.floor_fill = floor_fill(r.voxels, r.layers.floor_layer);
+  r.floor_fill = cloud::floor_fill(r.voxels, r.layers.floor_layer);
   const Grid<std::uint8_t>& evidence = r.nav.observed_free;  // not the filled floor holes
   r.free_from_evidence =
       params.layout.free_needs_evidence && (r.floor_fill < params.layout.sparse_floor_fill ||

@@ -120,6 +120,8 @@ ColumnScan scan_columns(const Grid<Cell>& layout, const cloud::VoxelGrid& voxels
       static_cast<std::int64_t>(std::ceil(voxels.to_cells(params.max_vertical_gap_m)));
   ColumnScan s{Grid<Column>(w, h), Grid<std::uint8_t>(w, h, 0),
                cv::Mat(h, w, CV_8U, cv::Scalar(1))};
+  if (cloud::floor_fill(voxels, floor_layer) >= kDenseFloorFill)
+    s.stray_max_points = kStrayMaxPointsDense;
   Grid<Column>& cols = s.cols;
   Grid<std::uint8_t>& pocket = s.pocket;
   cv::Mat& no_data = s.no_data;
@@ -201,16 +203,16 @@ bool seen_by_a_scanner(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
   return false;
 }
 
-// Stray returns (columns of at most kStrayMaxPoints points) at least kStrayBelowTopLayers below
-// the top of the nearest surface cell, where a scanner could have seen that top carried over:
-// the ray that left them passed under the top's level, so the object does not reach them (a
-// mixed pixel in the shadow behind a bin would otherwise join the shadow to the bin). They leave
-// the mask and become cells without data.
+// Stray returns (columns of at most stray_max_points points: ColumnScan) at least
+// kStrayBelowTopLayers below the top of the nearest surface cell, where a scanner could have seen
+// that top carried over: the ray that left them passed under the top's level, so the object does
+// not reach them (a mixed pixel in the shadow behind a bin would otherwise join the shadow to the
+// bin). They leave the mask and become cells without data.
 constexpr std::int64_t kSampleBandLayers = 3;  // 0.15 m on 5 cm layers: one top, sampled
 constexpr int kStrayReachCells = 4;            // 0.2 m on 5 cm cells: a bin's shadow up to the wall
 
 void drop_stray_below_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
-                           const Grid<Column>& cols,
+                           const Grid<Column>& cols, std::int64_t stray_max_points,
                            const std::vector<Eigen::Vector3d>& scanners_map, cv::Mat& no_data,
                            Grid<std::uint8_t>& mask) {
   const int w = mask.width, h = mask.height;
@@ -219,7 +221,7 @@ void drop_stray_below_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxe
   for (int r = 0; r < h; ++r)
     for (int c = 0; c < w; ++c)
       if (mask.at(c, r) && cols.at(c, r).top >= 0) {
-        const bool stray = cols.at(c, r).points <= kStrayMaxPoints;
+        const bool stray = cols.at(c, r).points <= stray_max_points;
         no_surface.at<std::uint8_t>(r, c) = stray ? 1 : 0;
         any_stray = any_stray || stray;
         any_surface = any_surface || !stray;
@@ -229,7 +231,7 @@ void drop_stray_below_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxe
   for (int r = 0; r < h; ++r)
     for (int c = 0; c < w; ++c) {
       const Column& own = cols.at(c, r);
-      if (!mask.at(c, r) || own.top < 0 || own.points > kStrayMaxPoints) continue;
+      if (!mask.at(c, r) || own.top < 0 || own.points > stray_max_points) continue;
       // The nearest surface's top, and the lowest surface top within kStrayReachCells: a stray
       // between a bin and the cabinet behind it is nearer to the cabinet, while its ray passed
       // over the bin.
@@ -297,7 +299,7 @@ Grid<float> fill_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
   const Grid<Column>& cols = scan.cols;
   const Grid<std::uint8_t>& pocket = scan.pocket;
   cv::Mat no_data = scan.no_data.clone();
-  drop_stray_below_tops(geo, voxels, cols, scanners_map, no_data, mask);
+  drop_stray_below_tops(geo, voxels, cols, scan.stray_max_points, scanners_map, no_data, mask);
   const bool any_data = scan.any_data && cv::countNonZero(no_data == 0) > 0;
   Grid<float> top(w, h, kNoHeight);
   if (any_data) {

@@ -342,7 +342,7 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
       heights.bottom.data[i] = static_cast<float>(voxels.layer_bottom_m(scan.cols.data[i].bottom));
   Grid<std::uint8_t> solid(w, h, 0);  // cells with more than a stray return
   for (std::size_t i = 0; i < solid.size(); ++i)
-    solid.data[i] = scan.cols.data[i].top >= 0 && scan.cols.data[i].points > kStrayMaxPoints;
+    solid.data[i] = scan.cols.data[i].top >= 0 && scan.cols.data[i].points > scan.stray_max_points;
   const Labels lab =
       split_at_necks(join_fragments(label_objects(mask, top, geo, params, scan.any_data), heights,
                                     geo.cell_m(), params),

@@ -26,8 +26,13 @@ struct Column {
 
 // A column holding at most this many points is a stray return (a mixed pixel behind an edge, a
 // ghost the filter's sampled rays missed) rather than a surface: a surface seen from a scanner
-// leaves several points in each 5 cm cell it covers (a bin's top 3-12).
+// leaves several points in each 5 cm cell it covers (a bin's top 3-12). On a dense scan
+// (cloud::floor_fill at least kDenseFloorFill) two: the mixed pixels behind a bin's rim land one
+// or two to a cell. A sparse scan's surfaces leave one or two per cell themselves (1 degree).
 constexpr std::int64_t kStrayMaxPoints = 1;
+constexpr std::int64_t kStrayMaxPointsDense = 2;
+// The floor fill of a dense scan: LayoutParams::sparse_floor_fill's default, for the same reason.
+constexpr double kDenseFloorFill = 0.6;
 // A stray return this many layers or more below the top of the nearest surface (a mixed pixel
 // just behind a bin's rim lies one layer down), where a scanner could have seen that top carried
 // over, lies where a ray passed under the top's level.
@@ -73,6 +78,7 @@ struct ColumnScan {
   Grid<std::uint8_t> pocket;  // furniture cells without data, floor unseen
   cv::Mat no_data;
   bool any_data = false;
+  std::int64_t stray_max_points = kStrayMaxPoints;  // kStrayMaxPointsDense on a dense scan
 };
 
 ColumnScan scan_columns(const Grid<Cell>& layout, const cloud::VoxelGrid& voxels,

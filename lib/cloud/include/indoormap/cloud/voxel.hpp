@@ -118,6 +118,12 @@ struct LayerAnalysis {
   std::vector<std::string> warnings;
 };
 
+/// The share of the cells of the floor's 0.2 m blocks (4 x 4 cells of 5 cm) that hold floor
+/// points (floor_layer and its neighbours): how densely the scan sampled the floor, 0.74-0.85 at
+/// the simulated scanner's default 0.25 degree step, 0.4-0.5 at 1 degree, about 0.2 at 2 degrees.
+/// 1 when no cell holds floor points.
+double floor_fill(const VoxelGrid& grid, std::int64_t floor_layer);
+
 /// Layer analysis bottom up by the number of occupied cells per layer. Throws InputError when
 /// all data lies in fewer than three layers (nothing to separate).
 LayerAnalysis analyse_layers(const VoxelGrid& grid, const LayerParams& params);
