@@ -58,8 +58,8 @@ void run_ghost_filter(const PointCloud& cloud, const cloud::GhostParams& params,
     covered += o.count;
   }
   // Points of unknown origin (in a storey's slice, those seen from another storey's positions)
-  // cast no ray: they add no evidence of free space, so the filter clears
-  // no voxel because of them. With most of the rays known it is still the exact filter.
+  // cast no ray: they add no evidence of free space, so the filter clears no voxel because of
+  // them. With most of the rays known it is still the exact filter.
   if (sources.empty()) {
     r.warnings.push_back("ghost filter skipped: " + std::to_string(cloud.scanners.size()) +
                          " scanner positions and the origin of every point unknown");
