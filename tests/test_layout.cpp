@@ -328,6 +328,16 @@ TEST(LayoutParams, ValidatedByBuildLayoutAndMakeMap) {
   LayoutParams thick;
   thick.wall_max_thickness_m = -1;
   EXPECT_THROW(build_layout(g, g, geo_for(g), {}, thick), UsageError);
+  for (const double depth : {-0.1, 2.5}) {
+    LayoutParams deep;
+    deep.hidden_body_max_depth_m = depth;
+    try {
+      build_layout(g, g, geo_for(g), {}, deep);
+      ADD_FAILURE() << depth;
+    } catch (const UsageError& e) {
+      EXPECT_NE(std::string(e.what()).find("layout.hidden_body_max_depth_m"), std::string::npos);
+    }
+  }
 }
 
 namespace {
