@@ -61,6 +61,33 @@ TEST(WallSlabs, OneFaceInEachBandIsAWall) {
   EXPECT_EQ(render01(thin), render01(parse(std::vector<std::string>(rows.size(), "..........."))));
 }
 
+// The inside of a wall against the gap between the two faces of a room's corner: 'W' wall, 'o'
+// open (flooded or seen), 'F' furniture band, ' ' neither; 0.1 m cells, walls at most 0.5 m
+// thick; rows six apart, so only rows hold runs. First row: a wall between two rooms, open past
+// its faces. Second: a line through a room's corner hidden behind a shelf, from the face of one
+// wall to the face of the other; past each face lies its wall's inside, which is filled, the
+// corner gap is not (it was, and the room's polygon ran 0.2 m inside the faces). Third: a
+// wall with a shelf against each face, its bodies unseen: neither face has open space past it,
+// nor a second wall's inside; filled. Without `open` every gap is filled, as before.
+TEST(WallInside, TheFacesOfARoomsCornerHoldNoWallBetweenThem) {
+  const std::vector<std::string> rows = {
+      "ooW   Woooooooooooooo", "                     ", "                     ",
+      "                     ", "                     ", "                     ",
+      "oW  W   W  Wooooooooo", "                     ", "                     ",
+      "                     ", "                     ", "                     ",
+      "oF     W   W     Fooo"};
+  const auto walls = parse(rows, 'W'), furn = parse(rows, 'F'), open = parse(rows, 'o');
+  const auto inside = wall_inside(walls, 0.1, 0.5, &open, &furn);
+  std::vector<std::string> expected(rows.size(), ".....................");
+  expected[0] = "...###...............";
+  expected[6] = "..##.....##..........";
+  expected[12] = "........###..........";
+  EXPECT_EQ(render01(inside), render01(parse(expected)));
+  const auto all = wall_inside(walls, 0.1, 0.5);
+  expected[6] = "..##.###.##..........";
+  EXPECT_EQ(render01(all), render01(parse(expected)));
+}
+
 // Two rooms, 0.1 m cells, and a wall 0.3 m thick between them whose left face only the
 // furniture band holds (a mobile scanner's beams end below the wall band there): with the seen
 // map it is wall in M_r from face to face, not a furniture strip along the left room.

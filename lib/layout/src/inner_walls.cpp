@@ -6,34 +6,71 @@
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
+#include <vector>
 
 namespace indoormap::layout {
 
-Grid<std::uint8_t> wall_inside(const Grid<std::uint8_t>& walls, double cell_m, double max_span_m) {
+Grid<std::uint8_t> wall_inside(const Grid<std::uint8_t>& walls, double cell_m, double max_span_m,
+                               const Grid<std::uint8_t>* open,
+                               const Grid<std::uint8_t>* furniture) {
   const int w = walls.width, h = walls.height;
+  if (open && (open->width != w || open->height != h)) open = nullptr;
+  if (furniture && (furniture->width != w || furniture->height != h)) furniture = nullptr;
   const int dirs[4][2] = {{1, 0}, {0, 1}, {1, 1}, {-1, 1}};
-  constexpr int kFar = 1 << 20;
   Grid<std::uint8_t> out(w, h, 0);
-  Grid<int> before(w, h, kFar), after(w, h, kFar);  // steps to the nearest wall cell
+  std::vector<CellIndex> line;
   for (const auto& d : dirs) {
     const int dc = d[0], dr = d[1];
     const double step_m = cell_m * std::hypot(dc, dr);
-    for (int r = 0; r < h; ++r)
-      for (int c = 0; c < w; ++c)
-        before.at(c, r) = walls.at(c, r) ? 0
-                          : before.contains(c - dc, r - dr)
-                              ? std::min(kFar, before.at(c - dc, r - dr) + 1)
-                              : kFar;
-    for (int r = h - 1; r >= 0; --r)
-      for (int c = w - 1; c >= 0; --c)
-        after.at(c, r) = walls.at(c, r) ? 0
-                         : after.contains(c + dc, r + dr)
-                             ? std::min(kFar, after.at(c + dc, r + dr) + 1)
-                             : kFar;
-    for (std::size_t i = 0; i < out.size(); ++i)
-      if (!walls.data[i] && before.data[i] < kFar && after.data[i] < kFar &&
-          (before.data[i] + after.data[i]) * step_m <= max_span_m + 1e-9)
-        out.data[i] = 1;
+    const int max_cells = static_cast<int>(std::floor(max_span_m / step_m + 1e-9));
+    // Whether open space lies just past the wall piece that ends (or starts) at index i, walking
+    // by `dir` (-1 back, +1 on), past the furniture-band face in front of it; a piece longer
+    // than a wall is thick is no face.
+    const auto open_past = [&](int i, int dir) {
+      const int n = static_cast<int>(line.size());
+      int k = i, walls_n = 0, furn_n = 0;
+      for (; k >= 0 && k < n && walls.at(line[k].col, line[k].row); k += dir) ++walls_n;
+      for (; furniture && k >= 0 && k < n && furniture->at(line[k].col, line[k].row); k += dir)
+        ++furn_n;
+      return walls_n <= max_cells && furn_n <= max_cells && k >= 0 && k < n &&
+             open->at(line[k].col, line[k].row);
+    };
+    // Whether, past that wall piece, a gap no wider than a wall, none of it open, ends at
+    // another wall piece: the line crosses a second wall's inside next to this gap.
+    const auto wall_gap_past = [&](int i, int dir) {
+      const int n = static_cast<int>(line.size());
+      int k = i, walls_n = 0, gap = 0;
+      for (; k >= 0 && k < n && walls.at(line[k].col, line[k].row); k += dir) ++walls_n;
+      for (; k >= 0 && k < n && !walls.at(line[k].col, line[k].row); k += dir, ++gap)
+        if (open->at(line[k].col, line[k].row)) return false;
+      return walls_n <= max_cells && gap > 0 && (gap + 1) * step_m <= max_span_m + 1e-9 &&
+             k >= 0 && k < n;
+    };
+    // A gap qualifies when open space lies past one of its wall pieces (a wall between two
+    // rooms), or when past neither lies a second wall's inside (a wall with furniture on both
+    // sides); not when it lies between the faces of a room's corner, each backed by its wall.
+    const auto qualifies = [&](int a, int b) {
+      return !open || open_past(a, -1) || open_past(b, +1) ||
+             (!wall_gap_past(a, -1) && !wall_gap_past(b, +1));
+    };
+    for (int r0 = 0; r0 < h; ++r0)
+      for (int c0 = 0; c0 < w; ++c0) {
+        if (walls.contains(c0 - dc, r0 - dr)) continue;  // not the first cell of its line
+        line.clear();
+        for (int c = c0, r = r0; walls.contains(c, r); c += dc, r += dr) line.push_back({c, r});
+        int last_wall = -1;
+        for (int i = 0; i < static_cast<int>(line.size()); ++i) {
+          if (!walls.at(line[i].col, line[i].row)) continue;
+          const int gap = i - last_wall - 1;
+          // The gap between two wall pieces: at most max_span_m from wall cell to wall cell;
+          // with `open`, the far side of one of the two pieces is open space (a wall's faces
+          // look at two rooms; two faces of one room's corner look at each other).
+          if (last_wall >= 0 && gap > 0 && (gap + 1) * step_m <= max_span_m + 1e-9 &&
+              qualifies(last_wall, i))
+            for (int k = last_wall + 1; k < i; ++k) out.at(line[k].col, line[k].row) = 1;
+          last_wall = i;
+        }
+      }
   }
   return out;
 }
@@ -123,7 +160,10 @@ void add_inner_walls(const Grid<std::uint8_t>& furniture, const Grid<std::uint8_
   // The slabs are found before the insides are added: their runs ask for one wall face.
   Grid<std::uint8_t> slabs;
   if (seen) slabs = wall_slabs(walls, furniture, *seen, cell_m, max_span_m);
-  add_long_pieces(wall_inside(walls, cell_m, max_span_m), passage, free_mask, seen, cell_m,
+  Grid<std::uint8_t> open = free_mask;
+  if (seen)
+    for (std::size_t i = 0; i < open.size(); ++i) open.data[i] |= seen->data[i];
+  add_long_pieces(wall_inside(walls, cell_m, max_span_m, &open, &furniture), passage, free_mask, seen, cell_m,
                   max_span_m, walls);
   if (seen) add_long_pieces(slabs, passage, free_mask, seen, cell_m, max_span_m, walls);
 }

@@ -94,8 +94,14 @@ struct HangingObject {
 Grid<std::uint8_t> passage_area(const Grid<std::uint8_t>& walls, int min_lines = 0);
 
 /// Cells between two wall cells at most max_span_m apart (centre to centre) along a row, column
-/// or diagonal, the wall cells excluded (LayoutParams::wall_max_thickness_m). Values: 0 / 1.
-Grid<std::uint8_t> wall_inside(const Grid<std::uint8_t>& walls, double cell_m, double max_span_m);
+/// or diagonal, the wall cells excluded (LayoutParams::wall_max_thickness_m). With `open` (free
+/// or seen cells), only where open space lies just past one of the two wall pieces (each at most
+/// max_span_m long along the line) and past the `furniture` cells in front of it (as long at
+/// most; a face seen in the furniture band only): the faces of a wall look at two rooms, the
+/// two faces of a room's corner at each other. Values: 0 / 1.
+Grid<std::uint8_t> wall_inside(const Grid<std::uint8_t>& walls, double cell_m, double max_span_m,
+                               const Grid<std::uint8_t>* open = nullptr,
+                               const Grid<std::uint8_t>* furniture = nullptr);
 
 /// Cells of a wall one of whose faces only the furniture band holds (LayoutParams::
 /// wall_max_thickness_m): along a row, column or diagonal, a run of cells not `seen` (the scan
