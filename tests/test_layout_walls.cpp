@@ -142,7 +142,8 @@ namespace {
 // y 1.3 - 2.5) and a cabinet 1.8 m tall standing free 1 m from the walls, whose shadow hides the
 // shelf's face north of y = 2; no noise, no tilt, no mixed pixels. The scanner sees the shelf's
 // face south of that and its south end, never its north end nor its top.
-layout::MapResult room_with_a_tall_shelf(double hidden_body_max_depth_m) {
+layout::MapResult room_with_a_tall_shelf(double hidden_body_max_depth_m,
+                                         double sparse_floor_fill = 0.6) {
   sim::Scene s;
   sim::Room room;
   room.name = "room";
@@ -169,6 +170,7 @@ layout::MapResult room_with_a_tall_shelf(double hidden_body_max_depth_m) {
   const sim::SimResult r = sim::simulate(sim::normalised(s));
   layout::MapParams p;
   p.layout.hidden_body_max_depth_m = hidden_body_max_depth_m;
+  p.layout.sparse_floor_fill = sparse_floor_fill;
   return layout::make_map(PointCloud{r.points, r.scanner_positions_m, {}}, p);
 }
 
@@ -201,4 +203,12 @@ TEST(Layout, TheUnseenBodyOfATallShelfAgainstAWallIsFurniture) {
     EXPECT_EQ(cell_at(on, x, y), cell_at(off, x, y));
     EXPECT_NE(cell_at(on, x, y), Cell::kFurniture);
   }
+  // layout.sparse_floor_fill sets what a dense scan is, for the flood and the objects' stray test
+  // (MapResult::dense_scan) alike.
+  EXPECT_TRUE(on.dense_scan);
+  EXPECT_FALSE(on.free_from_evidence);
+  const layout::MapResult strict = room_with_a_tall_shelf(0.7, 0.99);
+  EXPECT_LT(strict.floor_fill, 0.99);
+  EXPECT_FALSE(strict.dense_scan);
+  EXPECT_TRUE(strict.free_from_evidence);
 }

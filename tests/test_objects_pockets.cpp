@@ -37,9 +37,10 @@ struct BinWithShadow {
     }
     for (int r = 0; r < h; ++r) fill_column(grid, 31, r, 0.0, 1.9);
   }
-  ObjectsResult extract(bool with_scanner = true) const {
+  ObjectsResult extract(bool with_scanner = true,
+                        std::optional<bool> dense_scan = std::nullopt) const {
     return extract_objects(layout, geometry, grid, flat_layers(), every_size(),
-                           with_scanner ? scanner : std::vector<Eigen::Vector3d>{});
+                           with_scanner ? scanner : std::vector<Eigen::Vector3d>{}, dense_scan);
   }
 };
 
@@ -258,5 +259,8 @@ TEST(Objects, PairsOfStrayReturnsLeaveOnADenseScanOnly) {
     } else {
       EXPECT_GT(res.objects[0].cells, 16);  // the pairs and the gap between: the rule stands aside
     }
+    // The caller's word (layout::MapResult::dense_scan, from layout.sparse_floor_fill) decides
+    // over the floor fill: a user who moves that key moves this rule too.
+    EXPECT_EQ(t.extract(true, !dense).objects[0].cells == 16, !dense);
   }
 }

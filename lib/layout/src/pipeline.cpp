@@ -248,6 +248,7 @@ void map_voxelized(PointCloud cloud, const MapParams& params, MapResult& r) {
   // its beams leave the ends and tops of cabinets unseen, the flood ran in through them, while
   // the rays from along its path show the free floor (docs/pipeline.md, step 5).
   r.floor_fill = cloud::floor_fill(r.voxels, r.layers.floor_layer);
+  r.dense_scan = r.floor_fill >= params.layout.sparse_floor_fill;
   const Grid<std::uint8_t>& evidence = r.nav.observed_free;  // not the filled floor holes
   r.free_from_evidence =
       params.layout.free_needs_evidence && (r.floor_fill < params.layout.sparse_floor_fill ||

@@ -113,15 +113,14 @@ bool lintel_above(const cloud::VoxelGrid& g, int col, int row, std::int64_t floo
 
 ColumnScan scan_columns(const Grid<Cell>& layout, const cloud::VoxelGrid& voxels,
                         const cloud::LayerAnalysis& layers, const ObjectParams& params,
-                        Grid<std::uint8_t>& mask) {
+                        Grid<std::uint8_t>& mask, bool dense) {
   const std::int64_t floor_layer = layers.floor_layer, ceiling_layer = layers.ceiling_layer;
   const int w = layout.width, h = layout.height;
   const auto max_gap =
       static_cast<std::int64_t>(std::ceil(voxels.to_cells(params.max_vertical_gap_m)));
   ColumnScan s{Grid<Column>(w, h), Grid<std::uint8_t>(w, h, 0),
                cv::Mat(h, w, CV_8U, cv::Scalar(1))};
-  if (cloud::floor_fill(voxels, floor_layer) >= kDenseFloorFill)
-    s.stray_max_points = kStrayMaxPointsDense;
+  if (dense) s.stray_max_points = kStrayMaxPointsDense;
   Grid<Column>& cols = s.cols;
   Grid<std::uint8_t>& pocket = s.pocket;
   cv::Mat& no_data = s.no_data;

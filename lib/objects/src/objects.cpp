@@ -320,7 +320,8 @@ void drop_wall_faces(const Grid<Cell>& layout, ObjectsResult& res) {
 ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
                               const cloud::VoxelGrid& voxels, const cloud::LayerAnalysis& layers,
                               const ObjectParams& params,
-                              const std::vector<Eigen::Vector3d>& scanners_map) {
+                              const std::vector<Eigen::Vector3d>& scanners_map,
+                              std::optional<bool> dense_scan) {
   validate(params);
   const int w = layout.width, h = layout.height;
   if (w != geo.width() || h != geo.height() || voxels.nx != w || voxels.ny != h)
@@ -334,7 +335,9 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
 
   // Column extents; cells without data (pockets, closed gaps) take the top of the nearest cell
   // with data so that they join the object they fill.
-  const ColumnScan scan = scan_columns(layout, voxels, layers, params, mask);
+  const bool dense = dense_scan ? *dense_scan
+                                : cloud::floor_fill(voxels, layers.floor_layer) >= kDenseFloorFill;
+  const ColumnScan scan = scan_columns(layout, voxels, layers, params, mask, dense);
   const Grid<float> top = fill_tops(geo, voxels, scan, scanners_map, mask);
   PieceHeights heights{top, Grid<float>(w, h, kNoHeight), layers.floor_z_m, voxels.cell_m};
   for (std::size_t i = 0; i < mask.size(); ++i)

@@ -31,7 +31,8 @@ struct Column {
 // or two to a cell. A sparse scan's surfaces leave one or two per cell themselves (1 degree).
 constexpr std::int64_t kStrayMaxPoints = 1;
 constexpr std::int64_t kStrayMaxPointsDense = 2;
-// The floor fill of a dense scan: LayoutParams::sparse_floor_fill's default, for the same reason.
+// The floor fill of a dense scan when the caller does not say (extract_objects' dense_scan):
+// LayoutParams::sparse_floor_fill's default, for the same reason.
 constexpr double kDenseFloorFill = 0.6;
 // A stray return this many layers or more below the top of the nearest surface (a mixed pixel
 // just behind a bin's rim lies one layer down), where a scanner could have seen that top carried
@@ -71,7 +72,7 @@ bool lintel_above(const cloud::VoxelGrid& g, int col, int row, std::int64_t floo
 constexpr double kOpeningMinGap_m = 0.3;  // a window is taller (the simulator's: 1.2 m or more)
 constexpr double kLintelMin_m = 0.3;      // a lamp (0.06 m) and the ceiling's smear are thinner
 
-/// Column extents of the furniture cells (scan_columns); cells whose floor is seen and nothing
+/// Column extents of the furniture cells (scan_columns; `dense`: a dense scan's stray test); cells whose floor is seen and nothing
 /// stands on leave the mask.
 struct ColumnScan {
   Grid<Column> cols;
@@ -83,7 +84,7 @@ struct ColumnScan {
 
 ColumnScan scan_columns(const Grid<Cell>& layout, const cloud::VoxelGrid& voxels,
                         const cloud::LayerAnalysis& layers, const ObjectParams& params,
-                        Grid<std::uint8_t>& mask);
+                        Grid<std::uint8_t>& mask, bool dense);
 
 /// The top of every mask cell (kNoHeight without data); pocket cells a scanner could see into
 /// leave the mask.

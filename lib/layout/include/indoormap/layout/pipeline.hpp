@@ -53,6 +53,8 @@ struct MapResult {
   std::optional<double> viewpoint_occluded_share;
   bool viewpoint_dropped = false;
   double floor_fill = 1.0;  ///< floor points / cells of their 0.2 m blocks (sparse scans: low)
+  /// floor_fill at least LayoutParams::sparse_floor_fill: the objects step's stray test reads it.
+  bool dense_scan = true;
   /// M_r's flood ran over the cells the scan shows free only (a sparse scan, a moving scanner's
   /// path; LayoutParams::free_needs_evidence).
   bool free_from_evidence = false;

@@ -4,6 +4,7 @@
 // class of M_r, each with its size, place, height range from the voxel grid, and its own points.
 #include <Eigen/Core>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -120,10 +121,13 @@ struct ObjectsResult {
 /// scanner positions (map frame), neither are those where the neighbouring object's top would
 /// have been in a scanner's line of sight (docs/furniture-extract.md). Pillars and lamps follow
 /// the furniture objects in the list (params.pillar_max_extent_m, params.lamp_max_extent_m).
+/// `dense_scan` (layout::MapResult::dense_scan, set by the layout's sparse_floor_fill) lets two
+/// returns to a cell be a stray; without it, the voxels' floor fill decides at 0.6.
 ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geometry,
                               const cloud::VoxelGrid& voxels, const cloud::LayerAnalysis& layers,
                               const ObjectParams& params = {},
-                              const std::vector<Eigen::Vector3d>& scanners_map = {});
+                              const std::vector<Eigen::Vector3d>& scanners_map = {},
+                              std::optional<bool> dense_scan = std::nullopt);
 
 /// Indices of the points (map frame, same order as given) inside each object's crop region: the
 /// footprint cells dilated by crop_margin_m, heights within [z_min - margin, z_max + margin].
