@@ -101,9 +101,8 @@ std::optional<AppSetup> setup_pipeline_app(CLI::App& app, PipelineCli& cli, int 
 objects::ObjectsResult timed_objects(const layout::MapResult& m,
                                      const objects::ObjectParams& params, double* ms) {
   const auto t = std::chrono::steady_clock::now();
-  objects::ObjectsResult r = objects::extract_objects(m.layout.layout, m.geometry, m.voxels,
-                                                      m.layers, params, m.cloud_map.scanners,
-                                                      m.dense_scan);
+  objects::ObjectsResult r = objects::extract_objects(
+      m.layout.layout, m.geometry, m.voxels, m.layers, params, m.cloud_map.scanners, m.dense_scan);
   *ms = ms_since(t);
   return r;
 }

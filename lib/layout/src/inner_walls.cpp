@@ -43,8 +43,8 @@ Grid<std::uint8_t> wall_inside(const Grid<std::uint8_t>& walls, double cell_m, d
       for (; k >= 0 && k < n && walls.at(line[k].col, line[k].row); k += dir) ++walls_n;
       for (; k >= 0 && k < n && !walls.at(line[k].col, line[k].row); k += dir, ++gap)
         if (open->at(line[k].col, line[k].row)) return false;
-      return walls_n <= max_cells && gap > 0 && (gap + 1) * step_m <= max_span_m + 1e-9 &&
-             k >= 0 && k < n;
+      return walls_n <= max_cells && gap > 0 && (gap + 1) * step_m <= max_span_m + 1e-9 && k >= 0 &&
+             k < n;
     };
     // A gap qualifies when open space lies past one of its wall pieces (a wall between two
     // rooms), or when past neither lies a second wall's inside (a wall with furniture on both
@@ -163,8 +163,8 @@ void add_inner_walls(const Grid<std::uint8_t>& furniture, const Grid<std::uint8_
   Grid<std::uint8_t> open = free_mask;
   if (seen)
     for (std::size_t i = 0; i < open.size(); ++i) open.data[i] |= seen->data[i];
-  add_long_pieces(wall_inside(walls, cell_m, max_span_m, &open, &furniture), passage, free_mask, seen, cell_m,
-                  max_span_m, walls);
+  add_long_pieces(wall_inside(walls, cell_m, max_span_m, &open, &furniture), passage, free_mask,
+                  seen, cell_m, max_span_m, walls);
   if (seen) add_long_pieces(slabs, passage, free_mask, seen, cell_m, max_span_m, walls);
 }
 

@@ -335,8 +335,8 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
 
   // Column extents; cells without data (pockets, closed gaps) take the top of the nearest cell
   // with data so that they join the object they fill.
-  const bool dense = dense_scan ? *dense_scan
-                                : cloud::floor_fill(voxels, layers.floor_layer) >= kDenseFloorFill;
+  const bool dense =
+      dense_scan ? *dense_scan : cloud::floor_fill(voxels, layers.floor_layer) >= kDenseFloorFill;
   const ColumnScan scan = scan_columns(layout, voxels, layers, params, mask, dense);
   const Grid<float> top = fill_tops(geo, voxels, scan, scanners_map, mask);
   PieceHeights heights{top, Grid<float>(w, h, kNoHeight), layers.floor_z_m, voxels.cell_m};

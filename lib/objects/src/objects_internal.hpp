@@ -72,8 +72,8 @@ bool lintel_above(const cloud::VoxelGrid& g, int col, int row, std::int64_t floo
 constexpr double kOpeningMinGap_m = 0.3;  // a window is taller (the simulator's: 1.2 m or more)
 constexpr double kLintelMin_m = 0.3;      // a lamp (0.06 m) and the ceiling's smear are thinner
 
-/// Column extents of the furniture cells (scan_columns; `dense`: a dense scan's stray test); cells whose floor is seen and nothing
-/// stands on leave the mask.
+/// Column extents of the furniture cells (scan_columns; `dense`: a dense scan's stray test); cells
+/// whose floor is seen and nothing stands on leave the mask.
 struct ColumnScan {
   Grid<Column> cols;
   Grid<std::uint8_t> pocket;  // furniture cells without data, floor unseen
