@@ -40,7 +40,8 @@ struct BinWithShadow {
   ObjectsResult extract(bool with_scanner = true,
                         std::optional<bool> dense_scan = std::nullopt) const {
     return extract_objects(layout, geometry, grid, flat_layers(), every_size(),
-                           with_scanner ? scanner : std::vector<Eigen::Vector3d>{}, dense_scan);
+                           with_scanner ? scanner : std::vector<Eigen::Vector3d>{},
+                           ScanTraits{dense_scan});
   }
 };
 
@@ -263,4 +264,41 @@ TEST(Objects, PairsOfStrayReturnsLeaveOnADenseScanOnly) {
     // over the floor fill: a user who moves that key moves this rule too.
     EXPECT_EQ(t.extract(true, !dense).objects[0].cells == 16, !dense);
   }
+}
+
+// A moving scanner about 1 m up sees a cabinet (1.1 m) against a wall as its front face only:
+// its top is above the scanner, its body an unseen pocket, and the beams graze the wall above
+// it in single returns (1.8 m) in the cells beside the wall. Along the path, a cell without data
+// takes the top of the nearest surface within 0.8 m (the front face) before the nearer stray's:
+// the cabinet is one object from its face to the strays' cells against the wall (those keep
+// their own height). From fixed positions the nearest data decides as before, and the strays'
+// height cuts the body along the wall off the cabinet.
+TEST(Objects, AMovingScannersStraysOffTheWallDoNotCutTheCabinetsBody) {
+  constexpr int w = 30, h = 20;
+  Grid<Cell> layout = walled_room(w, h);
+  cloud::VoxelGrid grid = voxels(w, h, 50);
+  for (int r = 1; r < h - 1; ++r) {
+    layout.at(25, r) = Cell::kWall;
+    fill_column(grid, 25, r, 0.0, 2.4);
+  }
+  for (int r = 5; r <= 14; ++r) {
+    for (int c = 12; c <= 24; ++c) layout.at(c, r) = Cell::kFurniture;
+    for (int c = 12; c <= 13; ++c) fill_column(grid, c, r, 0.0, 1.1);  // the front face
+    fill_column(grid, 24, r, 1.8, 1.85, 1);                            // a stray off the wall
+  }
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  const std::vector<Eigen::Vector3d> path{{0.2, 0.3, 1.0}, {0.2, 0.5, 1.0}, {0.2, 0.7, 1.0}};
+  const auto cabinet = [&](bool moving) {
+    const auto res =
+        extract_objects(layout, geo, grid, flat_layers(), every_size(), path, {false, moving});
+    int best = 0;
+    double z = 0.0;
+    for (const auto& o : res.objects)
+      if (o.kind == ObjectKind::kFurniture && o.cells > best) best = o.cells, z = o.z_max_m;
+    return std::pair{best, z};
+  };
+  const auto [moving_cells, moving_z] = cabinet(true);
+  EXPECT_EQ(moving_cells, 12 * 10);
+  EXPECT_NEAR(moving_z, 1.1, 0.06);
+  EXPECT_LT(cabinet(false).first, 12 * 10 * 3 / 4);  // the body along the wall cut off
 }

@@ -102,7 +102,8 @@ objects::ObjectsResult timed_objects(const layout::MapResult& m,
                                      const objects::ObjectParams& params, double* ms) {
   const auto t = std::chrono::steady_clock::now();
   objects::ObjectsResult r = objects::extract_objects(
-      m.layout.layout, m.geometry, m.voxels, m.layers, params, m.cloud_map.scanners, m.dense_scan);
+      m.layout.layout, m.geometry, m.voxels, m.layers, params, m.cloud_map.scanners,
+      objects::ScanTraits{m.dense_scan, m.cloud_map.scanners_on_path});
   *ms = ms_since(t);
   return r;
 }

@@ -321,7 +321,7 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
                               const cloud::VoxelGrid& voxels, const cloud::LayerAnalysis& layers,
                               const ObjectParams& params,
                               const std::vector<Eigen::Vector3d>& scanners_map,
-                              std::optional<bool> dense_scan) {
+                              const ScanTraits& traits) {
   validate(params);
   const int w = layout.width, h = layout.height;
   if (w != geo.width() || h != geo.height() || voxels.nx != w || voxels.ny != h)
@@ -335,9 +335,11 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
 
   // Column extents; cells without data (pockets, closed gaps) take the top of the nearest cell
   // with data so that they join the object they fill.
-  const bool dense =
-      dense_scan ? *dense_scan : cloud::floor_fill(voxels, layers.floor_layer) >= kDenseFloorFill;
-  const ColumnScan scan = scan_columns(layout, voxels, layers, params, mask, dense);
+  const bool dense = traits.dense
+                         ? *traits.dense
+                         : cloud::floor_fill(voxels, layers.floor_layer) >= kDenseFloorFill;
+  ColumnScan scan = scan_columns(layout, voxels, layers, params, mask, dense);
+  scan.surface_first = traits.moving;
   const Grid<float> top = fill_tops(geo, voxels, scan, scanners_map, mask);
   PieceHeights heights{top, Grid<float>(w, h, kNoHeight), layers.floor_z_m, voxels.cell_m};
   for (std::size_t i = 0; i < mask.size(); ++i)

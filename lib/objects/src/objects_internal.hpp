@@ -80,6 +80,7 @@ struct ColumnScan {
   cv::Mat no_data;
   bool any_data = false;
   std::int64_t stray_max_points = kStrayMaxPoints;  // kStrayMaxPointsDense on a dense scan
+  bool surface_first = false;  // fill_tops: the nearest surface's top before a stray's (moving)
 };
 
 ColumnScan scan_columns(const Grid<Cell>& layout, const cloud::VoxelGrid& voxels,

@@ -60,6 +60,16 @@ struct ObjectParams {
                                     ///< is not the table's top)
 };
 
+/// What the caller knows of the scan (from layout::MapResult and the cloud).
+struct ScanTraits {
+  /// layout::MapResult::dense_scan (set by layout.sparse_floor_fill): two returns to a cell are
+  /// a stray. nullopt: the voxels' floor fill decides, at 0.6.
+  std::optional<bool> dense;
+  /// The positions are a moving scanner's path (PointCloud::scanners_on_path): a cell without
+  /// data takes the nearest surface's top before a nearer stray's (furniture-extract.md, step 2).
+  bool moving = false;
+};
+
 /// Checks ranges. Throws UsageError naming the key ("invalid parameter objects.<key>: ...").
 /// Called by extract_objects.
 void validate(const ObjectParams& params);
@@ -121,13 +131,12 @@ struct ObjectsResult {
 /// scanner positions (map frame), neither are those where the neighbouring object's top would
 /// have been in a scanner's line of sight (docs/furniture-extract.md). Pillars and lamps follow
 /// the furniture objects in the list (params.pillar_max_extent_m, params.lamp_max_extent_m).
-/// `dense_scan` (layout::MapResult::dense_scan, set by the layout's sparse_floor_fill) lets two
-/// returns to a cell be a stray; without it, the voxels' floor fill decides at 0.6.
+/// `scan` says what the caller knows of the scan (ScanTraits).
 ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geometry,
                               const cloud::VoxelGrid& voxels, const cloud::LayerAnalysis& layers,
                               const ObjectParams& params = {},
                               const std::vector<Eigen::Vector3d>& scanners_map = {},
-                              std::optional<bool> dense_scan = std::nullopt);
+                              const ScanTraits& scan = {});
 
 /// Indices of the points (map frame, same order as given) inside each object's crop region: the
 /// footprint cells dilated by crop_margin_m, heights within [z_min - margin, z_max + margin].
