@@ -331,6 +331,7 @@ json summary_json(const std::string& program, const PipelineRun& run, const Pipe
       {"floor_z_m", m.layers.floor_z_m},
       {"floor_fill", m.floor_fill},
       {"free_from_evidence", m.free_from_evidence},
+      {"veil_cells_dropped", m.veil_cells_dropped},
       {"ceiling_z_m", m.layers.ceiling_z_m},
       {"ceiling_found", m.layers.ceiling_found},
       {"ceiling_sloped", m.layers.ceiling_sloped},

@@ -265,6 +265,11 @@ void map_voxelized(PointCloud cloud, const MapParams& params, MapResult& r) {
   const Grid<std::uint8_t>* flood_evidence = r.free_from_evidence ? &evidence
                                              : not_hidden.size()  ? &not_hidden
                                                                   : nullptr;
+  // Veils of mixed pixels the ghost filter left (origins estimated: section 3c) are no furniture
+  // where the flood runs over evidence only; elsewhere a veil cell taken out of a shelf's sparse
+  // face opened it to the flood, which ran into the unseen body (docs/pipeline.md, step 5).
+  if (!r.ghost_origins_exact && r.free_from_evidence)
+    r.furniture = without_veils(r.furniture, r.walls, r.nav.map, evidence, &r.veil_cells_dropped);
   r.layout = build_layout(r.walls, r.furniture, r.geometry, seeds, params.layout, &support,
                           flood_evidence, &evidence);
   for (const auto& w : r.layout.warnings) r.warnings.push_back(w);

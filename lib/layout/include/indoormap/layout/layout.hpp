@@ -114,6 +114,16 @@ Grid<std::uint8_t> wall_inside(const Grid<std::uint8_t>& walls, double cell_m, d
 Grid<std::uint8_t> wall_slabs(const Grid<std::uint8_t>& walls, const Grid<std::uint8_t>& furniture,
                               const Grid<std::uint8_t>& seen, double cell_m, double max_span_m);
 
+/// M_f without the columns that the navigation map calls free (nav: its map) over floor the scan
+/// saw (observed_free): the veils of mixed pixels beside door jambs and furniture edges, columns of
+/// a few points at unrelated heights, which the navigation map's scatter rule already leaves out
+/// (docs/pipeline.md, section 7) and which M_f took for furniture. Wall-band cells stay. Grids of
+/// another size leave furniture as it is; `dropped` counts the cells taken out.
+Grid<std::uint8_t> without_veils(const Grid<std::uint8_t>& furniture,
+                                 const Grid<std::uint8_t>& walls, const Grid<Cell>& nav,
+                                 const Grid<std::uint8_t>& observed_free,
+                                 std::int64_t* dropped = nullptr);
+
 struct LayoutResult {
   Grid<Cell> layout;                   ///< M_r
   Grid<std::uint8_t> passage;          ///< step 4 result (1 = inside)

@@ -58,6 +58,9 @@ struct MapResult {
   /// M_r's flood ran over the cells the scan shows free only (a sparse scan, a moving scanner's
   /// path; LayoutParams::free_needs_evidence).
   bool free_from_evidence = false;
+  /// Furniture-band cells taken out of M_f as veils (without_veils; origins not exact and the
+  /// flood on evidence only).
+  std::int64_t veil_cells_dropped = 0;
   std::vector<StageTime> timings;
   std::vector<std::string> warnings;  ///< from every stage, in order
 };
