@@ -289,10 +289,6 @@ cv::Mat between_samples(const Grid<Column>& cols, const cv::Mat& no_data,
   return out;
 }
 
-}  // namespace
-
-namespace {
-
 // A moving scanner's cell without data takes the top of the nearest surface (a column of more
 // points than a stray's) within this many cells before a stray return nearer it: its beams
 // graze the wall above a cabinet in single returns (1.7-2 m), and the cabinet's unseen body

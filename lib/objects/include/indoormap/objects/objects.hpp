@@ -131,12 +131,12 @@ struct ObjectsResult {
 /// scanner positions (map frame), neither are those where the neighbouring object's top would
 /// have been in a scanner's line of sight (docs/furniture-extract.md). Pillars and lamps follow
 /// the furniture objects in the list (params.pillar_max_extent_m, params.lamp_max_extent_m).
-/// `scan` says what the caller knows of the scan (ScanTraits).
+/// `traits` says what the caller knows of the scan (ScanTraits).
 ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geometry,
                               const cloud::VoxelGrid& voxels, const cloud::LayerAnalysis& layers,
                               const ObjectParams& params = {},
                               const std::vector<Eigen::Vector3d>& scanners_map = {},
-                              const ScanTraits& scan = {});
+                              const ScanTraits& traits = {});
 
 /// Indices of the points (map frame, same order as given) inside each object's crop region: the
 /// footprint cells dilated by crop_margin_m, heights within [z_min - margin, z_max + margin].
