@@ -27,8 +27,8 @@ struct Column {
 // A column holding at most this many points is a stray return (a mixed pixel behind an edge, a
 // ghost the filter's sampled rays missed) rather than a surface: a surface seen from a scanner
 // leaves several points in each 5 cm cell it covers (a bin's top 3-12). On a dense scan
-// (cloud::floor_fill at least kDenseFloorFill) two: the mixed pixels behind a bin's rim land one
-// or two to a cell. A sparse scan's surfaces leave one or two per cell themselves (1 degree).
+// (ScanTraits::dense, from layout.sparse_floor_fill) two: the mixed pixels behind a bin's rim land
+// one or two to a cell. A sparse scan's surfaces leave one or two per cell themselves (1 degree).
 constexpr std::int64_t kStrayMaxPoints = 1;
 constexpr std::int64_t kStrayMaxPointsDense = 2;
 // The floor fill of a dense scan when the caller does not say (extract_objects' dense_scan):
