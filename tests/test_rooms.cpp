@@ -150,6 +150,26 @@ TEST(Rooms, PassagePiecesBeyondTheLintelLeaveTheRoom) {
   EXPECT_EQ(r.labels.at(62, 27), 1);  // the segmentation's labels stay as they were
 }
 
+// A moving scanner walked through the door: M_r calls the whole passage free, and the
+// segmentation gave room 1 all of it but the last column. Every passage cell is closed along the
+// door's axis within the door's span (the jambs), also those beside a jamb, whose way to the far
+// jamb is longer than half the door: the passage leaves both rooms, which end at their faces.
+TEST(Rooms, ASeenPassageLeavesBothRoomsUpToItsJambs) {
+  const TwoRooms t;
+  rooms::RoomsResult r = rooms::find_rooms(t.nav, t.geometry);
+  ASSERT_EQ(r.rooms.size(), 2u);
+  ASSERT_EQ(r.doors.size(), 1u);
+  for (int row = 13; row < 29; ++row)
+    for (int c = 61; c <= 64; ++c) r.labels.at(c, row) = c < 64 ? 1 : 2;
+  r.doors[0].end0_m = {3.2, 0.65};
+  r.doors[0].end1_m = {3.2, 1.45};
+  rooms::fill_rooms(r, t.nav, {});
+  ASSERT_EQ(rooms::room_at(r, {1.5, 1.0}), 1);
+  ASSERT_EQ(rooms::room_at(r, {4.8, 1.0}), 2);
+  for (const auto& v : r.rooms[0].polygon_m) EXPECT_LE(v.x(), 3.05 + 0.03);
+  for (const auto& v : r.rooms[1].polygon_m) EXPECT_GE(v.x(), 3.25 - 0.03);
+}
+
 namespace {
 
 // Two rooms 4 x 3 m side by side, the whole rotated by 30 degrees about the origin, 0.2 m walls

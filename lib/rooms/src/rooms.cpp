@@ -119,36 +119,47 @@ void rooms_draw_polygons(RoomsResult& out, const Grid<std::uint16_t>& cells) {
   }
 }
 
-/// Door passages: room cells within 0.4 m of a door's line (across it) and within its span
-/// (plus two cells) that have cells outside every room on both sides along the door's axis,
-/// within the half width plus two cells. Inside a room, beside the wall face, the way along the
-/// wall is open; in the passage through the wall it is not.
+/// Door passages: room cells near a door (within its half width plus two cells of its middle)
+/// that lie on a chord no longer than the door's width plus four cells between cells outside
+/// every room, in some direction (every 15 degrees). Inside a room, beside the wall face, every
+/// line runs on into the room on one side at least; in the passage through the wall the line
+/// from jamb to jamb is closed. The door's own axis (the rooms' shared border) is no guide: the
+/// segmentation often splits the passage along a diagonal.
 void rooms_cut_passages(const RoomsResult& out, Grid<std::uint16_t>& grown) {
   const GridGeometry& g = out.geometry;
   const Grid<std::uint16_t>& labels = out.labels;
   const double cell = g.cell_m();
+  constexpr int kDirections = 12;
+  std::array<Eigen::Vector2d, kDirections> dirs;
+  for (int k = 0; k < kDirections; ++k)
+    dirs[static_cast<std::size_t>(k)] = {std::cos(k * M_PI / kDirections),
+                                         std::sin(k * M_PI / kDirections)};
   for (const auto& d : out.doors) {
     const Eigen::Vector2d m = 0.5 * (d.end0_m + d.end1_m);
     const double len = (d.end1_m - d.end0_m).norm();
     if (len <= 0.0) continue;
-    const Eigen::Vector2d u = (d.end1_m - d.end0_m) / len, n(-u.y(), u.x());
-    const double half = 0.5 * len + 2.0 * cell, depth = 0.4;
-    const auto closed_at = [&](Eigen::Vector2d p, const Eigen::Vector2d& dir) {
-      for (double t = 0.0; t <= half + cell; t += 0.5 * cell) {
+    const double half = 0.5 * len + 2.0 * cell, max_chord = 2.0 * half;
+    // Distance from p along dir to the first cell outside every room, max_chord + 1 if none.
+    const auto reach = [&](const Eigen::Vector2d& p, const Eigen::Vector2d& dir) {
+      for (double t = 0.0; t <= max_chord; t += 0.5 * cell) {
         const CellIndex q = g.cell_of(p + t * dir);
-        if (!labels.contains(q.col, q.row) || labels.at(q) == 0) return true;
+        if (!labels.contains(q.col, q.row) || labels.at(q) == 0) return t;
       }
-      return false;
+      return max_chord + 1.0;
     };
-    const CellIndex lo = g.cell_of(m - Eigen::Vector2d::Constant(half + depth));
-    const CellIndex hi = g.cell_of(m + Eigen::Vector2d::Constant(half + depth));
+    const CellIndex lo = g.cell_of(m - Eigen::Vector2d::Constant(half));
+    const CellIndex hi = g.cell_of(m + Eigen::Vector2d::Constant(half));
     for (int r = std::max(lo.row, 0); r <= std::min(hi.row, labels.height - 1); ++r)
       for (int c = std::max(lo.col, 0); c <= std::min(hi.col, labels.width - 1); ++c) {
         const int id = labels.at(c, r);
         if (id != d.a && id != d.b) continue;
         const Eigen::Vector2d p = g.center_of({c, r});
-        if (std::abs((p - m).dot(n)) > depth || std::abs((p - m).dot(u)) > half) continue;
-        if (closed_at(p, u) && closed_at(p, -u)) grown.at(c, r) = 0;
+        if ((p - m).norm() > half) continue;
+        for (const auto& dir : dirs)
+          if (reach(p, dir) + reach(p, -dir) <= max_chord) {
+            grown.at(c, r) = 0;
+            break;
+          }
       }
   }
 }
