@@ -302,3 +302,45 @@ TEST(Objects, AMovingScannersStraysOffTheWallDoNotCutTheCabinetsBody) {
   EXPECT_NEAR(moving_z, 1.1, 0.06);
   EXPECT_LT(cabinet(false).first, 12 * 10 * 3 / 4);  // the body along the wall cut off
 }
+
+// A shelf (1.8 m) against a wall one cell thick, seen as its front face only: its body is an
+// unseen pocket. Behind the wall, in the next room, a cabinet (0.8 m) seen whole. The body's
+// cells take the top of the nearest data reached through furniture cells (the shelf's face), not
+// the cabinet's across the wall, nearer in a straight line, whose height split the body off the
+// shelf: the shelf is one object and the cabinet another, from fixed positions and along a path.
+TEST(Objects, AShelfsUnseenBodyTakesItsOwnFacesTopNotTheOneAcrossTheWall) {
+  constexpr int w = 34, h = 20;
+  Grid<Cell> layout = walled_room(w, h);
+  cloud::VoxelGrid grid = voxels(w, h, 50);
+  for (int r = 1; r < h - 1; ++r) {
+    layout.at(25, r) = Cell::kWall;
+    fill_column(grid, 25, r, 0.0, 2.4);
+  }
+  for (int r = 5; r <= 14; ++r) {
+    for (int c = 12; c <= 24; ++c) layout.at(c, r) = Cell::kFurniture;
+    for (int c = 12; c <= 13; ++c) fill_column(grid, c, r, 0.0, 1.8);  // the shelf's face
+    for (int c = 26; c <= 29; ++c) {                                   // the cabinet
+      layout.at(c, r) = Cell::kFurniture;
+      fill_column(grid, c, r, 0.0, 0.8);
+    }
+  }
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  const std::vector<Eigen::Vector3d> path{{0.2, 0.3, 1.0}, {0.2, 0.5, 1.0}, {0.2, 0.7, 1.0}};
+  for (const bool moving : {false, true}) {
+    const auto res =
+        extract_objects(layout, geo, grid, flat_layers(), every_size(), path, {false, moving});
+    const auto object_at = [&](int c, int r) -> const FurnitureObject* {
+      for (const auto& o : res.objects)
+        if (o.id == res.labels.at(c, r)) return &o;
+      return nullptr;
+    };
+    const FurnitureObject* shelf = object_at(13, 10);
+    const FurnitureObject* cabinet = object_at(27, 10);
+    ASSERT_NE(shelf, nullptr) << moving;
+    ASSERT_NE(cabinet, nullptr) << moving;
+    EXPECT_EQ(shelf->cells, 13 * 10) << moving;
+    EXPECT_NEAR(shelf->z_max_m, 1.8, 0.06) << moving;
+    EXPECT_EQ(cabinet->cells, 4 * 10) << moving;
+    EXPECT_NEAR(cabinet->z_max_m, 0.8, 0.06) << moving;
+  }
+}

@@ -1,7 +1,9 @@
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <opencv2/imgproc.hpp>
+#include <queue>
 
 #include "objects_internal.hpp"
 
@@ -181,6 +183,41 @@ Grid<CellIndex> nearest_data(const cv::Mat& no_data) {
   return out;
 }
 
+// For every cell of the mask, the nearest data cell (no_data 0) reached through mask cells
+// (8-neighbour steps of 1 and sqrt 2 cells); elsewhere, and where the mask's piece holds no data,
+// the nearest in a straight line (nearest_data). A shelf's unseen body along a wall takes the
+// top of its own seen face, not that of the cabinet behind the wall in the next room.
+Grid<CellIndex> nearest_data_within(const cv::Mat& no_data, const Grid<std::uint8_t>& mask) {
+  Grid<CellIndex> out = nearest_data(no_data);
+  const int w = no_data.cols, h = no_data.rows;
+  Grid<float> dist(w, h, std::numeric_limits<float>::infinity());
+  using Item = std::pair<float, int>;  // distance, cell index
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c)
+      if (mask.at(c, r) && !no_data.at<std::uint8_t>(r, c)) {
+        dist.at(c, r) = 0.0F;
+        queue.push({0.0F, r * w + c});
+      }
+  while (!queue.empty()) {
+    const auto [d, i] = queue.top();
+    queue.pop();
+    const int c = i % w, r = i / w;
+    if (d > dist.at(c, r)) continue;
+    for (int dr = -1; dr <= 1; ++dr)
+      for (int dc = -1; dc <= 1; ++dc) {
+        const int nc = c + dc, nr = r + dr;
+        if ((!dc && !dr) || !mask.contains(nc, nr) || !mask.at(nc, nr)) continue;
+        const float nd = d + ((dc && dr) ? static_cast<float>(M_SQRT2) : 1.0F);
+        if (nd >= dist.at(nc, nr)) continue;
+        dist.at(nc, nr) = nd;
+        out.at(nc, nr) = out.at(c, r);
+        queue.push({nd, nr * w + nc});
+      }
+  }
+  return out;
+}
+
 // The target of a line-of-sight test over cell (c, r): just above the top layer `top`.
 Eigen::Vector3d top_target(const GridGeometry& geo, const cloud::VoxelGrid& voxels, int c, int r,
                            std::int64_t top) {
@@ -298,7 +335,7 @@ constexpr double kSurfaceReachCells = 16.0;
 
 // The nearest surface cell of every cell (col -1 everywhere when there is none).
 Grid<CellIndex> nearest_surface(const Grid<Column>& cols, const cv::Mat& no_data,
-                                const ColumnScan& scan) {
+                                const ColumnScan& scan, const Grid<std::uint8_t>& mask) {
   cv::Mat no_surface = no_data.clone();
   bool any = false;
   for (int r = 0; r < no_data.rows; ++r)
@@ -309,7 +346,7 @@ Grid<CellIndex> nearest_surface(const Grid<Column>& cols, const cv::Mat& no_data
         any = any || !stray;
       }
   if (!any) return Grid<CellIndex>(no_data.cols, no_data.rows, CellIndex{-1, -1});
-  return nearest_data(no_surface);
+  return nearest_data_within(no_surface, mask);
 }
 
 }  // namespace
@@ -325,10 +362,10 @@ Grid<float> fill_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
   const bool any_data = scan.any_data && cv::countNonZero(no_data == 0) > 0;
   Grid<float> top(w, h, kNoHeight);
   if (any_data) {
-    const Grid<CellIndex> nearest = nearest_data(no_data);
+    const Grid<CellIndex> nearest = nearest_data_within(no_data, mask);
     const cv::Mat near_data = between_samples(cols, no_data, nearest, pocket, mask);
     const Grid<CellIndex> surface =
-        scan.surface_first ? nearest_surface(cols, no_data, scan) : Grid<CellIndex>{};
+        scan.surface_first ? nearest_surface(cols, no_data, scan, mask) : Grid<CellIndex>{};
     for (int r = 0; r < h; ++r)
       for (int c = 0; c < w; ++c)
         if (mask.at(c, r)) {
