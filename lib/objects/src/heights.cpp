@@ -186,7 +186,8 @@ Grid<CellIndex> nearest_data(const cv::Mat& no_data) {
 // For every cell of the mask, the nearest data cell (no_data 0) reached through mask cells
 // (8-neighbour steps of 1 and sqrt 2 cells); elsewhere, and where the mask's piece holds no data,
 // the nearest in a straight line (nearest_data). A shelf's unseen body along a wall takes the
-// top of its own seen face, not that of the cabinet behind the wall in the next room.
+// top of its own seen face, not that of the cabinet behind the wall in the next room (a moving
+// scanner about 1 m up sees a tall shelf as its front face only).
 Grid<CellIndex> nearest_data_within(const cv::Mat& no_data, const Grid<std::uint8_t>& mask) {
   Grid<CellIndex> out = nearest_data(no_data);
   const int w = no_data.cols, h = no_data.rows;
@@ -362,7 +363,11 @@ Grid<float> fill_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
   const bool any_data = scan.any_data && cv::countNonZero(no_data == 0) > 0;
   Grid<float> top(w, h, kNoHeight);
   if (any_data) {
-    const Grid<CellIndex> nearest = nearest_data_within(no_data, mask);
+    // Along a path only: from fixed positions the straight-line nearest serves the objects
+    // better (on the buildings' 3DTK rows the search through furniture joined the shelves on
+    // both sides of a wall through a gap in it, and the rooms step dropped them as a wall).
+    const Grid<CellIndex> nearest =
+        scan.surface_first ? nearest_data_within(no_data, mask) : nearest_data(no_data);
     const cv::Mat near_data = between_samples(cols, no_data, nearest, pocket, mask);
     const Grid<CellIndex> surface =
         scan.surface_first ? nearest_surface(cols, no_data, scan, mask) : Grid<CellIndex>{};
