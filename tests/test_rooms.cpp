@@ -170,6 +170,35 @@ TEST(Rooms, ASeenPassageLeavesBothRoomsUpToItsJambs) {
   for (const auto& v : r.rooms[1].polygon_m) EXPECT_GE(v.x(), 3.25 - 0.03);
 }
 
+// A veil of mixed pixels (furniture, outside every room) stands in room 2 before the door. Lines
+// from the lower jamb to it, 35-40 degrees off the wall, cross room 2's cells in front of the door
+// and are no longer than the door: without a guide, those cells would leave the room and its
+// polygon take a notch there. Only chords within 15 degrees of the passage's axis (the shortest
+// closed chord through the door's middle, jamb to jamb) cut.
+TEST(Rooms, AVeilBeforeTheDoorCutsNoNotchInFrontOfIt) {
+  TwoRooms t;
+  rooms::RoomsResult r = rooms::find_rooms(t.nav, t.geometry);
+  ASSERT_EQ(r.rooms.size(), 2u);
+  ASSERT_EQ(r.doors.size(), 1u);
+  Grid<Cell> layout = t.nav;
+  for (int row = 22; row <= 26; ++row)
+    for (int c = 72; c <= 75; ++c) {
+      layout.at(c, row) = Cell::kFurniture;
+      r.labels.at(c, row) = 0;
+    }
+  for (int row = 13; row < 29; ++row)
+    for (int c = 61; c <= 64; ++c) r.labels.at(c, row) = c < 63 ? 1 : 2;
+  r.doors[0].end0_m = {3.15, 0.65};
+  r.doors[0].end1_m = {3.15, 1.45};
+  rooms::fill_rooms(r, layout, {});
+  ASSERT_EQ(rooms::room_at(r, {4.8, 1.0}), 2);
+  for (int row = 13; row <= 21; ++row)  // room 2's cells in front of the door stay in its polygon
+    for (int c = 65; c <= 71; ++c)
+      EXPECT_TRUE(contains(r.rooms[1].polygon_m, t.geometry.center_of({c, row})))
+          << c << " " << row;
+  for (const auto& v : r.rooms[1].polygon_m) EXPECT_GE(v.x(), 3.25 - 0.03);
+}
+
 namespace {
 
 // Two rooms 4 x 3 m side by side, the whole rotated by 30 degrees about the origin, 0.2 m walls

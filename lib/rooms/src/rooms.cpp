@@ -121,8 +121,9 @@ void rooms_draw_polygons(RoomsResult& out, const Grid<std::uint16_t>& cells) {
 
 /// Door passages: room cells near a door (within its half width plus two cells of its middle)
 /// that lie on a chord no longer than the door's width plus four cells between cells outside
-/// every room, in some direction (every 15 degrees). Inside a room, beside the wall face, every
-/// line runs on into the room on one side at least; in the passage through the wall the line
+/// every room, in some direction (every 15 degrees) within 15 degrees of the passage's axis (a
+/// veil before the door closes steep chords from a jamb). Inside a room, beside the wall face,
+/// every line runs on into the room on one side at least; in the passage through the wall the line
 /// from jamb to jamb is closed. The door's own axis (the rooms' shared border) is no guide: the
 /// segmentation often splits the passage along a diagonal.
 void rooms_cut_passages(const RoomsResult& out, Grid<std::uint16_t>& grown) {
@@ -147,6 +148,15 @@ void rooms_cut_passages(const RoomsResult& out, Grid<std::uint16_t>& grown) {
       }
       return max_chord + 1.0;
     };
+    // The passage's axis: the direction of the shortest closed chord through the door's middle
+    // (jamb to jamb), when there is one; chords within 15 degrees of it only.
+    int axis = -1;
+    double shortest = max_chord;
+    for (int k = 0; k < kDirections; ++k) {
+      const Eigen::Vector2d& dir = dirs[static_cast<std::size_t>(k)];
+      const double chord = reach(m, dir) + reach(m, -dir);
+      if (chord <= shortest) shortest = chord, axis = k;
+    }
     const CellIndex lo = g.cell_of(m - Eigen::Vector2d::Constant(half));
     const CellIndex hi = g.cell_of(m + Eigen::Vector2d::Constant(half));
     for (int r = std::max(lo.row, 0); r <= std::min(hi.row, labels.height - 1); ++r)
@@ -155,11 +165,15 @@ void rooms_cut_passages(const RoomsResult& out, Grid<std::uint16_t>& grown) {
         if (id != d.a && id != d.b) continue;
         const Eigen::Vector2d p = g.center_of({c, r});
         if ((p - m).norm() > half) continue;
-        for (const auto& dir : dirs)
+        for (int k = 0; k < kDirections; ++k) {
+          const int off = std::abs(k - axis) % kDirections;
+          if (axis >= 0 && std::min(off, kDirections - off) > 1) continue;
+          const Eigen::Vector2d& dir = dirs[static_cast<std::size_t>(k)];
           if (reach(p, dir) + reach(p, -dir) <= max_chord) {
             grown.at(c, r) = 0;
             break;
           }
+        }
       }
   }
 }
