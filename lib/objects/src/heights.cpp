@@ -334,7 +334,8 @@ cv::Mat between_samples(const Grid<Column>& cols, const cv::Mat& no_data,
 // cabinet is 0.6 m.
 constexpr double kSurfaceReachCells = 16.0;
 
-// The nearest surface cell of every cell (col -1 everywhere when there is none).
+// The nearest surface cell of every cell, through the mask (nearest_data_within; col -1
+// everywhere when there is none).
 Grid<CellIndex> nearest_surface(const Grid<Column>& cols, const cv::Mat& no_data,
                                 const ColumnScan& scan, const Grid<std::uint8_t>& mask) {
   cv::Mat no_surface = no_data.clone();
