@@ -6,6 +6,7 @@
 #include <cmath>
 #include <set>
 
+#include "indoormap/border/border.hpp"
 #include "indoormap/core/errors.hpp"
 #include "indoormap/core/polygon.hpp"
 #include "indoormap/formats/rooms_json.hpp"
@@ -196,6 +197,29 @@ TEST(Rooms, AVeilBeforeTheDoorCutsNoNotchInFrontOfIt) {
     for (int c = 65; c <= 71; ++c)
       EXPECT_TRUE(contains(r.rooms[1].polygon_m, t.geometry.center_of({c, row})))
           << c << " " << row;
+  for (const auto& v : r.rooms[1].polygon_m) EXPECT_GE(v.x(), 3.25 - 0.03);
+}
+
+// The passage of a door the scanner walked through, split between the rooms along a diagonal,
+// leaves both rooms' cells (fill_rooms marks it in rooms.passages) and is no room space for the
+// fit: the sides of the jambs are no faces of either room, and both fitted polygons end at their
+// own face of the wall.
+TEST(Rooms, FittedPolygonsEndAtTheirFacesAcrossASeenPassage) {
+  const TwoRooms t;
+  rooms::RoomsResult r = rooms::find_rooms(t.nav, t.geometry);
+  ASSERT_EQ(r.rooms.size(), 2u);
+  ASSERT_EQ(r.doors.size(), 1u);
+  for (int row = 13; row < 29; ++row)
+    for (int c = 61; c <= 64; ++c)
+      r.labels.at(c, row) = static_cast<std::uint16_t>(4 * (c - 61) < (row - 13) ? 1 : 2);
+  r.doors[0].end0_m = {3.05, 0.65};
+  r.doors[0].end1_m = {3.25, 1.45};
+  rooms::fill_rooms(r, t.nav, {});
+  ASSERT_EQ(r.passages.width, t.nav.width);
+  EXPECT_TRUE(r.passages.at(62, 20));
+  EXPECT_FALSE(r.passages.at(66, 20));
+  EXPECT_EQ(rooms::fit_rooms_to_faces(r, t.nav, border::BorderParams{}), 2);
+  for (const auto& v : r.rooms[0].polygon_m) EXPECT_LE(v.x(), 3.05 + 0.03);
   for (const auto& v : r.rooms[1].polygon_m) EXPECT_GE(v.x(), 3.25 - 0.03);
 }
 

@@ -121,7 +121,7 @@ void rooms_draw_polygons(RoomsResult& out, const Grid<std::uint16_t>& cells) {
 
 /// Door passages: room cells near a door (within its half width plus two cells of its middle)
 /// that lie on a chord no longer than the door's width plus four cells between cells outside
-/// every room, in some direction (every 15 degrees) within 15 degrees of the passage's axis (a
+/// every room, in some direction (every 7.5 degrees) within 15 degrees of the passage's axis (a
 /// veil before the door closes steep chords from a jamb). Inside a room, beside the wall face,
 /// every line runs on into the room on one side at least; in the passage through the wall the line
 /// from jamb to jamb is closed. The door's own axis (the rooms' shared border) is no guide: the
@@ -130,7 +130,7 @@ void rooms_cut_passages(const RoomsResult& out, Grid<std::uint16_t>& grown) {
   const GridGeometry& g = out.geometry;
   const Grid<std::uint16_t>& labels = out.labels;
   const double cell = g.cell_m();
-  constexpr int kDirections = 12;
+  constexpr int kDirections = 24, kAxisWindow = 2;  // every 7.5 degrees, 15 off the axis
   std::array<Eigen::Vector2d, kDirections> dirs;
   for (int k = 0; k < kDirections; ++k)
     dirs[static_cast<std::size_t>(k)] = {std::cos(k * M_PI / kDirections),
@@ -167,7 +167,7 @@ void rooms_cut_passages(const RoomsResult& out, Grid<std::uint16_t>& grown) {
         if ((p - m).norm() > half) continue;
         for (int k = 0; k < kDirections; ++k) {
           const int off = std::abs(k - axis) % kDirections;
-          if (axis >= 0 && std::min(off, kDirections - off) > 1) continue;
+          if (axis >= 0 && std::min(off, kDirections - off) > kAxisWindow) continue;
           const Eigen::Vector2d& dir = dirs[static_cast<std::size_t>(k)];
           if (reach(p, dir) + reach(p, -dir) <= max_chord) {
             grown.at(c, r) = 0;
@@ -235,6 +235,9 @@ void fill_rooms(RoomsResult& out, const Grid<Cell>& layout, const Grid<std::uint
   Grid<int> steps(labels.width, labels.height, 0);
   std::vector<CellIndex> queue;
   rooms_cut_passages(out, grown);
+  out.passages = Grid<std::uint8_t>(labels.width, labels.height, 0);
+  for (std::size_t i = 0; i < grown.data.size(); ++i)
+    out.passages.data[i] = labels.data[i] != 0 && grown.data[i] == 0;
   for (int r = 0; r < labels.height; ++r)
     for (int c = 0; c < labels.width; ++c) {
       if (!grown.at(c, r)) continue;
@@ -299,9 +302,14 @@ int fit_rooms_to_faces(RoomsResult& out, const Grid<Cell>& layout,
   if (layout.width != out.labels.width || layout.height != out.labels.height) return 0;
   // The rooms' free cells are room space beside the faces, also where M_r's flood did not go
   // (its seeds are the scanner positions; without any it floods one room).
+  // A door's passage is no room space: the sides of its jambs are no faces of the rooms.
   Grid<Cell> faces = layout;
+  const bool passages = out.passages.data.size() == faces.data.size();
   for (std::size_t i = 0; i < faces.data.size(); ++i)
-    if (out.labels.data[i] != 0 && faces.data[i] == Cell::kUnknown) faces.data[i] = Cell::kFree;
+    if (passages && out.passages.data[i])
+      faces.data[i] = Cell::kUnknown;
+    else if (out.labels.data[i] != 0 && faces.data[i] == Cell::kUnknown)
+      faces.data[i] = Cell::kFree;
   // Each room's fit reads only its own outline and the shared grids: the rooms are split between
   // the cores, and the results applied in room order.
   const auto parts = parallel_parts(out.rooms.size(), 1, [&](std::size_t r0, std::size_t r1) {

@@ -66,6 +66,9 @@ struct RoomsResult {
   Grid<std::uint16_t> labels;  ///< room id per cell of the navigation map (0: no room)
   std::vector<Room> rooms;     ///< rooms[i].id == i + 1
   std::vector<RoomDoor> doors;
+  /// Non-zero: a door's passage through its wall, which fill_rooms took out of both rooms (empty
+  /// before fill_rooms). fit_rooms_to_faces counts it as no room space.
+  Grid<std::uint8_t> passages;
 };
 
 /// Splits the free cells (Cell::kFree) of a navigation map into rooms. No free cell gives no
@@ -95,14 +98,16 @@ Grid<Cell> mark_wall_bodies(const Grid<Cell>& layout, const Grid<Cell>& nav,
 /// of the room layout M_r (its wall band, seen above the furniture), at `blocked` cells (the
 /// inner-wall strips) and at other rooms' cells; the polygons (and areas, perimeters) are
 /// redrawn from the grown cells, so furniture and the unseen floor behind it along a wall no
-/// longer cut notches into them. Labels and doors stay those of the free space. layout and
+/// longer cut notches into them. A door's passage leaves both rooms (rooms.passages holds it).
+/// Labels and doors stay those of the free space. layout and
 /// blocked (non-zero: blocked; may be empty) share the rooms' grid; a layout of another size
 /// leaves the rooms unchanged.
 void fill_rooms(RoomsResult& rooms, const Grid<Cell>& layout, const Grid<std::uint8_t>& blocked,
                 double max_fill_m = 1.0);
 
 /// Every room's polygon fitted to the wall faces of the room layout M_r (`layout`, on the rooms'
-/// grid; the rooms' free cells count as room space beside a face), as the paper's border closure
+/// grid; the rooms' free cells count as room space beside a face, the doors' passages as none:
+/// a jamb's side is no face of the room), as the paper's border closure
 /// fits a single room's (border::fit_to_wall_faces): a straight line per wall face instead of the
 /// cells' staircase, door recesses and the shadows of objects along a wall bridged. A room keeps
 /// its cell outline when the fit fails, when the fitted polygon's area differs from the outline's
