@@ -266,6 +266,16 @@ TEST(Objects, PairsOfStrayReturnsLeaveOnADenseScanOnly) {
   }
 }
 
+// A wall across the room at column `col` (rows 1 .. h - 2), seen up to 2.4 m, and the path a
+// moving scanner about 1 m up took along the room's left side (map frame).
+void wall_across(Grid<Cell>& layout, cloud::VoxelGrid& grid, int col) {
+  for (int r = 1; r < layout.height - 1; ++r) {
+    layout.at(col, r) = Cell::kWall;
+    fill_column(grid, col, r, 0.0, 2.4);
+  }
+}
+const std::vector<Eigen::Vector3d> kLeftSidePath{{0.2, 0.3, 1.0}, {0.2, 0.5, 1.0}, {0.2, 0.7, 1.0}};
+
 // A moving scanner about 1 m up sees a cabinet (1.1 m) against a wall as its front face only:
 // its top is above the scanner, its body an unseen pocket, and the beams graze the wall above
 // it in single returns (1.8 m) in the cells beside the wall. Along the path, a cell without data
@@ -277,17 +287,14 @@ TEST(Objects, AMovingScannersStraysOffTheWallDoNotCutTheCabinetsBody) {
   constexpr int w = 30, h = 20;
   Grid<Cell> layout = walled_room(w, h);
   cloud::VoxelGrid grid = voxels(w, h, 50);
-  for (int r = 1; r < h - 1; ++r) {
-    layout.at(25, r) = Cell::kWall;
-    fill_column(grid, 25, r, 0.0, 2.4);
-  }
+  wall_across(layout, grid, 25);
   for (int r = 5; r <= 14; ++r) {
     for (int c = 12; c <= 24; ++c) layout.at(c, r) = Cell::kFurniture;
     for (int c = 12; c <= 13; ++c) fill_column(grid, c, r, 0.0, 1.1);  // the front face
     fill_column(grid, 24, r, 1.8, 1.85, 1);                            // a stray off the wall
   }
   const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
-  const std::vector<Eigen::Vector3d> path{{0.2, 0.3, 1.0}, {0.2, 0.5, 1.0}, {0.2, 0.7, 1.0}};
+  const std::vector<Eigen::Vector3d>& path = kLeftSidePath;
   const auto cabinet = [&](bool moving) {
     const auto res =
         extract_objects(layout, geo, grid, flat_layers(), every_size(), path, {false, moving});
@@ -313,10 +320,7 @@ TEST(Objects, AShelfsUnseenBodyTakesItsOwnFacesTopNotTheOneAcrossTheWall) {
   constexpr int w = 34, h = 20;
   Grid<Cell> layout = walled_room(w, h);
   cloud::VoxelGrid grid = voxels(w, h, 50);
-  for (int r = 1; r < h - 1; ++r) {
-    layout.at(25, r) = Cell::kWall;
-    fill_column(grid, 25, r, 0.0, 2.4);
-  }
+  wall_across(layout, grid, 25);
   for (int r = 5; r <= 14; ++r) {
     for (int c = 12; c <= 24; ++c) layout.at(c, r) = Cell::kFurniture;
     for (int c = 12; c <= 13; ++c) fill_column(grid, c, r, 0.0, 1.8);  // the shelf's face
@@ -326,7 +330,7 @@ TEST(Objects, AShelfsUnseenBodyTakesItsOwnFacesTopNotTheOneAcrossTheWall) {
     }
   }
   const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
-  const std::vector<Eigen::Vector3d> path{{0.2, 0.3, 1.0}, {0.2, 0.5, 1.0}, {0.2, 0.7, 1.0}};
+  const std::vector<Eigen::Vector3d>& path = kLeftSidePath;
   const auto cells_of = [&](bool moving) {
     const auto res =
         extract_objects(layout, geo, grid, flat_layers(), every_size(), path, {false, moving});

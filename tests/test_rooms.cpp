@@ -36,6 +36,21 @@ struct TwoRooms {
   }
 };
 
+// The rooms of TwoRooms with the door's passage labelled by `room_of(col, row)` (as the
+// segmentation may split it) and the door's ends set: the input of fill_rooms' passage cut.
+template <class RoomOf>
+rooms::RoomsResult split_passage(const TwoRooms& t, RoomOf room_of, Eigen::Vector2d end0,
+                                 Eigen::Vector2d end1) {
+  rooms::RoomsResult r = rooms::find_rooms(t.nav, t.geometry);
+  EXPECT_EQ(r.rooms.size(), 2u);
+  EXPECT_EQ(r.doors.size(), 1u);
+  for (int row = 13; row < 29; ++row)
+    for (int c = 61; c <= 64; ++c)
+      r.labels.at(c, row) = static_cast<std::uint16_t>(room_of(c, row));
+  if (!r.doors.empty()) r.doors[0].end0_m = end0, r.doors[0].end1_m = end1;
+  return r;
+}
+
 }  // namespace
 
 TEST(Rooms, TwoRoomsJoinedByOneDoor) {
@@ -157,13 +172,9 @@ TEST(Rooms, PassagePiecesBeyondTheLintelLeaveTheRoom) {
 // jamb is longer than half the door: the passage leaves both rooms, which end at their faces.
 TEST(Rooms, ASeenPassageLeavesBothRoomsUpToItsJambs) {
   const TwoRooms t;
-  rooms::RoomsResult r = rooms::find_rooms(t.nav, t.geometry);
+  rooms::RoomsResult r =
+      split_passage(t, [](int c, int) { return c < 64 ? 1 : 2; }, {3.2, 0.65}, {3.2, 1.45});
   ASSERT_EQ(r.rooms.size(), 2u);
-  ASSERT_EQ(r.doors.size(), 1u);
-  for (int row = 13; row < 29; ++row)
-    for (int c = 61; c <= 64; ++c) r.labels.at(c, row) = c < 64 ? 1 : 2;
-  r.doors[0].end0_m = {3.2, 0.65};
-  r.doors[0].end1_m = {3.2, 1.45};
   rooms::fill_rooms(r, t.nav, {});
   ASSERT_EQ(rooms::room_at(r, {1.5, 1.0}), 1);
   ASSERT_EQ(rooms::room_at(r, {4.8, 1.0}), 2);
@@ -177,20 +188,16 @@ TEST(Rooms, ASeenPassageLeavesBothRoomsUpToItsJambs) {
 // polygon take a notch there. Only chords within 15 degrees of the passage's axis (the shortest
 // closed chord through the door's middle, jamb to jamb) cut.
 TEST(Rooms, AVeilBeforeTheDoorCutsNoNotchInFrontOfIt) {
-  TwoRooms t;
-  rooms::RoomsResult r = rooms::find_rooms(t.nav, t.geometry);
+  const TwoRooms t;
+  rooms::RoomsResult r =
+      split_passage(t, [](int c, int) { return c < 63 ? 1 : 2; }, {3.15, 0.65}, {3.15, 1.45});
   ASSERT_EQ(r.rooms.size(), 2u);
-  ASSERT_EQ(r.doors.size(), 1u);
   Grid<Cell> layout = t.nav;
   for (int row = 22; row <= 26; ++row)
     for (int c = 72; c <= 75; ++c) {
       layout.at(c, row) = Cell::kFurniture;
       r.labels.at(c, row) = 0;
     }
-  for (int row = 13; row < 29; ++row)
-    for (int c = 61; c <= 64; ++c) r.labels.at(c, row) = c < 63 ? 1 : 2;
-  r.doors[0].end0_m = {3.15, 0.65};
-  r.doors[0].end1_m = {3.15, 1.45};
   rooms::fill_rooms(r, layout, {});
   ASSERT_EQ(rooms::room_at(r, {4.8, 1.0}), 2);
   for (int row = 13; row <= 21; ++row)  // room 2's cells in front of the door stay in its polygon
@@ -206,14 +213,10 @@ TEST(Rooms, AVeilBeforeTheDoorCutsNoNotchInFrontOfIt) {
 // own face of the wall.
 TEST(Rooms, FittedPolygonsEndAtTheirFacesAcrossASeenPassage) {
   const TwoRooms t;
-  rooms::RoomsResult r = rooms::find_rooms(t.nav, t.geometry);
+  rooms::RoomsResult r =
+      split_passage(t, [](int c, int row) { return 4 * (c - 61) < (row - 13) ? 1 : 2; },
+                    {3.05, 0.65}, {3.25, 1.45});
   ASSERT_EQ(r.rooms.size(), 2u);
-  ASSERT_EQ(r.doors.size(), 1u);
-  for (int row = 13; row < 29; ++row)
-    for (int c = 61; c <= 64; ++c)
-      r.labels.at(c, row) = static_cast<std::uint16_t>(4 * (c - 61) < (row - 13) ? 1 : 2);
-  r.doors[0].end0_m = {3.05, 0.65};
-  r.doors[0].end1_m = {3.25, 1.45};
   rooms::fill_rooms(r, t.nav, {});
   ASSERT_EQ(r.passages.width, t.nav.width);
   EXPECT_TRUE(r.passages.at(62, 20));
