@@ -223,3 +223,31 @@ TEST(Border, OutlineFittedToTheWallFacesDropsASliver) {
   const Grid<Cell> empty(geo.width(), geo.height(), Cell::kFree);
   EXPECT_FALSE(border::fit_to_wall_faces(outline, empty, geo).has_value());
 }
+
+// Step 6 alone: a 5 x 3 m room whose north wall no scanner saw (free floor up to its face,
+// unknown behind) but for a stub 0.3 m long, turned by 20 degrees (the end of another room's wall
+// where it meets this one). The chain's detour along the unseen wall looks like a shadow over the
+// north-east corner, but the stub's few face points cannot carry its line 1.7 m further: the
+// corner stays where the free floor ends, not where the stub's line meets the east wall (0.6 m
+// further out).
+TEST(Border, AFewFacePointsDoNotCarryAWallAcrossAShadowedCorner) {
+  const GridGeometry geo({0.0, 0.0}, kCell, 140, 100);
+  const Polygon truth{{1.0, 1.0}, {6.0, 1.0}, {6.0, 4.0}, {1.0, 4.0}};
+  cv::Mat img(geo.height(), geo.width(), CV_8U, cv::Scalar(0));
+  fill(img, offset_rectilinear(truth, 0.3), geo, static_cast<int>(Cell::kWall));
+  fill(img, {{0.7, 4.0}, {6.3, 4.0}, {6.3, 4.3}, {0.7, 4.3}}, geo,
+       static_cast<int>(Cell::kUnknown));
+  const double rise = 0.3 * std::tan(20.0 * M_PI / 180.0);
+  fill(img, {{4.0, 4.0}, {4.3, 4.0 + rise}, {4.3, 4.1 + rise}, {4.0, 4.1}}, geo,
+       static_cast<int>(Cell::kWall));
+  fill(img, offset_rectilinear(truth, -kCell), geo, static_cast<int>(Cell::kFree));
+  fill(img, {{4.0, 3.95}, {4.3, 3.95}, {4.3, 3.95 + rise}}, geo, static_cast<int>(Cell::kFree));
+  const Grid<Cell> lay = to_layout(img);
+  const Polygon outline{{1.0, 1.0},         {6.0, 1.0},  {6.0, 4.0}, {4.3, 4.0},
+                        {4.3, 3.95 + rise}, {4.0, 3.97}, {1.0, 4.0}};
+  ASSERT_TRUE(indoormap::is_simple(outline));
+  const auto fit = border::fit_to_wall_faces(outline, lay, geo);
+  ASSERT_TRUE(fit.has_value());
+  EXPECT_LE(hausdorff(*fit, truth), 0.15);
+  for (const auto& v : *fit) EXPECT_LT(v.y(), 4.2) << fmt(v);
+}

@@ -29,8 +29,8 @@ bool same_face(const FaceLine& l1, const FaceLine& l2, const CellParams& cp) {
   return dist(l1, l2.c) <= cp.tol && dist(l2, l1.c) <= cp.tol;
 }
 
-void refit(FaceLine& l) {
-  if (l.inliers.size() >= 2) fit_tls(l.inliers, l.b - l.a, l);
+void refit(FaceLine& l, const CellParams& cp) {
+  if (l.inliers.size() >= 2) fit_face_line(l, l.b - l.a, cp.tol);
 }
 
 // Replaces lines[i .. i + k] (cyclic) by joint, which spans from lines[i].a to lines[i + k].b.
@@ -59,7 +59,7 @@ bool merge_same_face(std::vector<FaceLine>& lines, const CellParams& cp) {
     if (!supported(l1) || !supported(l2) || !same_face(l1, l2, cp)) continue;
     l1.b = l2.b;
     l1.inliers.insert(l1.inliers.end(), l2.inliers.begin(), l2.inliers.end());
-    refit(l1);
+    refit(l1, cp);
     lines.erase(lines.begin() + static_cast<std::ptrdiff_t>((i + 1) % m));
     return true;
   }
@@ -91,7 +91,7 @@ bool bridge_recess(std::vector<FaceLine>& lines, const CellParams& cp) {
       FaceLine joint = lines[i];
       joint.b = lines[j].b;
       joint.inliers.insert(joint.inliers.end(), lines[j].inliers.begin(), lines[j].inliers.end());
-      refit(joint);
+      refit(joint, cp);
       join_across(lines, i, k, std::move(joint));
       return true;
     }
@@ -178,10 +178,9 @@ bool drop_explained_line(std::vector<FaceLine>& lines, const CellParams& cp) {
           next.inliers.push_back(p);
         }
       }
-      if (supported(prev)) refit(prev);
-      if (supported(next)) refit(next);
+      if (supported(next)) refit(next, cp);
     }
-    prev.b = cur.b;  // the chain edge of prev now reaches over cur's
+    extend_to(prev, cur.b, tol);  // the chain edge of prev now reaches over cur's (and is refitted)
     lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(i));
     return true;
   }

@@ -1,6 +1,7 @@
 // Step 6 of the closure: the room polygon fitted to the wall faces beside the chain (the
 // steps that simplify the face lines are in face_steps.cpp, the shadows in shadows.cpp).
 #include <cmath>
+#include <limits>
 
 #include "internal.hpp"
 
@@ -120,6 +121,46 @@ void fit_tls(const std::vector<Eigen::Vector2d>& pts, const Eigen::Vector2d& hin
   line.u = u;
 }
 
+// Ordinary regression's prediction error of the line's offset at p, with the residuals' variance
+// s2 (at least a cell's quantisation) from the points' spread about the line.
+double extrapolation_error(const FaceLine& l, const Eigen::Vector2d& p) {
+  const double n = static_cast<double>(l.inliers.size());
+  if (n < 3) return std::numeric_limits<double>::infinity();
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (const auto& q : l.inliers) mean += q;
+  mean /= n;
+  double stt = 0.0, srr = 0.0;
+  for (const auto& q : l.inliers) {
+    stt += std::pow((q - mean).dot(l.u), 2);
+    srr += std::pow((q - l.c).dot(l.normal()), 2);
+  }
+  const double s2 = std::max(srr / (n - 2.0), 1.0 / 12.0);
+  if (!(stt > 0)) return std::numeric_limits<double>::infinity();
+  return std::sqrt(s2 / n + std::pow((p - mean).dot(l.u), 2) * s2 / stt);
+}
+
+void fit_face_line(FaceLine& line, const Eigen::Vector2d& along, double max_error) {
+  fit_tls(line.inliers, along, line);
+  if (std::max(extrapolation_error(line, line.a), extrapolation_error(line, line.b)) <= max_error)
+    return;
+  line.u = along.normalized();
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (const auto& p : line.inliers) mean += p;
+  line.c = mean / static_cast<double>(line.inliers.size());
+}
+
+void extend_to(FaceLine& line, const Eigen::Vector2d& b, double max_error) {
+  if (!line.inliers.empty()) {
+    line.b = b;
+    fit_face_line(line, line.b - line.a, max_error);
+    return;
+  }
+  const double depth = (line.c - line.a).dot(line.normal());
+  line.b = b;
+  line.u = (line.b - line.a).normalized();
+  line.c = line.a + line.normal() * depth;
+}
+
 std::optional<Eigen::Vector2d> intersect(const FaceLine& l1, const FaceLine& l2) {
   const double cr = l1.u.x() * l2.u.y() - l1.u.y() * l2.u.x();
   if (std::abs(cr) < 1e-9) return std::nullopt;
@@ -209,7 +250,7 @@ std::optional<Polygon> corners(std::vector<FaceLine>& lines, const CellParams& c
       }
       break;
     }
-    lines[(*reversed + m - 1) % m].b = lines[*reversed].b;
+    extend_to(lines[(*reversed + m - 1) % m], lines[*reversed].b, cp.tol);
     lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(*reversed));
   }
   return out;

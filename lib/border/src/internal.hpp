@@ -84,6 +84,19 @@ inline constexpr std::size_t kMinFacePoints = 4;
 void fit_tls(const std::vector<Eigen::Vector2d>& pts, const Eigen::Vector2d& hint, FaceLine& line);
 std::optional<Eigen::Vector2d> intersect(const FaceLine& l1, const FaceLine& l2);
 double angle_between(const FaceLine& l1, const FaceLine& l2);
+/// The standard error (cell units) of the line fitted to l's face points (total least squares)
+/// where it reaches p: its offset's error and its direction's, which grows with the distance from
+/// the points' centre. The residuals' spread is taken as at least a cell's quantisation
+/// (1/12 cell^2). Infinite with fewer than 3 points.
+double extrapolation_error(const FaceLine& l, const Eigen::Vector2d& p);
+/// The line through line.inliers (at least kMinFacePoints): total least squares where the points
+/// fix its direction along the whole chain edge (extrapolation_error at most max_error at line.a
+/// and line.b), otherwise along `along` through their centre. A few face points at one end of a
+/// long edge (where another wall meets it) would turn it at random.
+void fit_face_line(FaceLine& line, const Eigen::Vector2d& along, double max_error);
+/// Moves the end of line's chain edge to b (the edge now reaches over a dropped line's): a fitted
+/// line is fitted again (fit_face_line), an unfitted one follows the new edge at its old depth.
+void extend_to(FaceLine& line, const Eigen::Vector2d& b, double max_error);
 
 /// The polygon fitted to the wall faces (cell units), and the shadows it runs across.
 struct FaceFit {

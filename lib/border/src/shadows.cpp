@@ -119,7 +119,9 @@ std::optional<Shadow> shadow_bridge(const std::vector<FaceLine>& lines, std::siz
 //    out_max behind either line, and X lies at most max_size beyond both ends (along the lines);
 //  - the detour runs into the room: some vertex lies more than tol inside both lines;
 //  - more than shadow_min_unknown_share of the cells between the detour and X are unknown;
-//  - its two flanks have fewer than kMinFacePoints face points off both lines (as shadow_bridge).
+//  - its two flanks have fewer than kMinFacePoints face points off both lines (as shadow_bridge);
+//  - both lines reach X within tol (extrapolation_error): a wall seen over a few cells (where
+//    another wall meets it) gives no direction to carry it a metre further.
 // Returns the corner X and the region cut off (the detour closed through X), or nullopt.
 std::optional<CornerShadow> corner_shadow_bridge(const std::vector<FaceLine>& lines, std::size_t i,
                                                  std::size_t k, const Grid<Cell>& layout,
@@ -161,6 +163,7 @@ std::optional<CornerShadow> corner_shadow_bridge(const std::vector<FaceLine>& li
         return std::min(offset(l1, p), offset(l2, p));
       }))
     return std::nullopt;
+  if (extrapolation_error(l1, *x) > tol || extrapolation_error(l2, *x) > tol) return std::nullopt;
   return CornerShadow{*x, std::move(region)};
 }
 
