@@ -166,6 +166,22 @@ TEST(Rooms, PassagePiecesBeyondTheLintelLeaveTheRoom) {
   EXPECT_EQ(r.labels.at(62, 27), 1);  // the segmentation's labels stay as they were
 }
 
+// A group of furniture 1.5 m x 1.5 m fills room 2's corner: its far cells lie 1.5 m (30 cells, 4-
+// neighbour steps) from the room's free floor. The room grows through it to its walls (up to 2 m),
+// and its polygon takes the corner in: the whole room, 3 m x 2 m (its cells' outline, pushed out by
+// half a cell: 6.25 m2; 6.0 m2 when the growth stops at 1 m).
+TEST(Rooms, ARoomGrowsThroughTheFurnitureInItsCornerToTheWalls) {
+  TwoRooms t;
+  for (int r = 1; r <= 30; ++r)
+    for (int c = 95; c <= 124; ++c) t.nav.at(c, r) = Cell::kFurniture;
+  rooms::RoomsResult r = rooms::find_rooms(t.nav, t.geometry);
+  ASSERT_EQ(r.rooms.size(), 2u);
+  rooms::fill_rooms(r, t.nav, {});
+  const rooms::Room& right = r.rooms[static_cast<std::size_t>(rooms::room_at(r, {4.8, 1.8}) - 1)];
+  EXPECT_TRUE(contains(right.polygon_m, t.geometry.center_of({124, 1})));
+  EXPECT_NEAR(right.area_m2, 6.25, 0.01);
+}
+
 // A moving scanner walked through the door: M_r calls the whole passage free, and the
 // segmentation gave room 1 all of it but the last column. Every passage cell is closed along the
 // door's axis within the door's span (the jambs), also those beside a jamb, whose way to the far

@@ -94,7 +94,9 @@ Grid<Cell> mark_wall_bodies(const Grid<Cell>& layout, const Grid<Cell>& nav,
                             const RoomsResult& rooms, double max_wall_m);
 
 /// Wall-bounded rooms: each room's cells grown (all rooms at once, 4-neighbours, first come
-/// first served) into the cells that are not free, up to max_fill_m, stopping at the wall cells
+/// first served) into the cells that are not free, up to max_fill_m (2 m: a group of cabinets
+/// filling a room's corner; at 1 m the buildings' rooms kept notches there, 3 m changes nothing
+/// more on them), stopping at the wall cells
 /// of the room layout M_r (its wall band, seen above the furniture), at `blocked` cells (the
 /// inner-wall strips) and at other rooms' cells; the polygons (and areas, perimeters) are
 /// redrawn from the grown cells, so furniture and the unseen floor behind it along a wall no
@@ -103,7 +105,7 @@ Grid<Cell> mark_wall_bodies(const Grid<Cell>& layout, const Grid<Cell>& nav,
 /// blocked (non-zero: blocked; may be empty) share the rooms' grid; a layout of another size
 /// leaves the rooms unchanged.
 void fill_rooms(RoomsResult& rooms, const Grid<Cell>& layout, const Grid<std::uint8_t>& blocked,
-                double max_fill_m = 1.0);
+                double max_fill_m = 2.0);
 
 /// Every room's polygon fitted to the wall faces of the room layout M_r (`layout`, on the rooms'
 /// grid; the rooms' free cells count as room space beside a face, the doors' passages as none:
