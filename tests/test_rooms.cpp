@@ -182,6 +182,44 @@ TEST(Rooms, ARoomGrowsThroughTheFurnitureInItsCornerToTheWalls) {
   EXPECT_NEAR(right.area_m2, 6.25, 0.01);
 }
 
+// One room 5 m x 3 m (a wall two cells thick all round) narrowed in its middle by furniture
+// against both long walls: the segmentation splits it at the neck between them, 1.3 m wide.
+// Neither end of that "door" has a jamb (a wall cell of a piece of at least 1 m2 within 0.2 m),
+// and it is wider than a door (1.2 m): the two rooms are one. A pillar (a small piece of wall) at
+// one end changes nothing; a wall stub at the ends, or a neck of 1.0 m, keeps the door.
+TEST(Rooms, ANeckBetweenFurnitureIsNoDoor) {
+  const auto room_with_neck = [](int furniture_rows, Cell stub) {
+    Grid<Cell> nav(100, 60, Cell::kWall);
+    for (int r = 2; r <= 57; ++r)
+      for (int c = 2; c <= 97; ++c) nav.at(c, r) = Cell::kFree;
+    for (int c = 45; c <= 54; ++c)
+      for (int k = 0; k < furniture_rows; ++k) nav.at(c, 2 + k) = nav.at(c, 57 - k) = stub;
+    return nav;
+  };
+  const GridGeometry geo({0.0, 0.0}, kCell, 100, 60);
+  const auto split_and_join = [&](const Grid<Cell>& nav) {
+    rooms::RoomsResult r = rooms::find_rooms(nav, geo);
+    EXPECT_EQ(r.rooms.size(), 2u);
+    EXPECT_EQ(r.doors.size(), 1u);
+    rooms::join_furniture_necks(r, nav);
+    return r;
+  };
+  const rooms::RoomsResult joined = split_and_join(room_with_neck(15, Cell::kFurniture));
+  ASSERT_EQ(joined.rooms.size(), 1u);
+  EXPECT_TRUE(joined.doors.empty());
+  EXPECT_EQ(joined.rooms[0].id, 1);
+  EXPECT_EQ(joined.rooms[0].cells, 96 * 56 - 2 * 10 * 15);
+  for (int r = 20; r <= 40; ++r) EXPECT_EQ(joined.labels.at(50, r), 1);
+
+  Grid<Cell> pillar = room_with_neck(15, Cell::kFurniture);
+  for (int r = 12; r <= 16; ++r)
+    for (int c = 47; c <= 52; ++c) pillar.at(c, r) = Cell::kWall;
+  EXPECT_EQ(split_and_join(pillar).rooms.size(), 1u);
+
+  EXPECT_EQ(split_and_join(room_with_neck(15, Cell::kWall)).rooms.size(), 2u);
+  EXPECT_EQ(split_and_join(room_with_neck(19, Cell::kFurniture)).rooms.size(), 2u);
+}
+
 // A moving scanner walked through the door: M_r calls the whole passage free, and the
 // segmentation gave room 1 all of it but the last column. Every passage cell is closed along the
 // door's axis within the door's span (the jambs), also those beside a jamb, whose way to the far

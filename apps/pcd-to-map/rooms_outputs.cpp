@@ -21,6 +21,8 @@ StoreyRooms find_storey_rooms(const layout::MapResult& m, objects::ObjectsResult
   StoreyRooms r;
   const Grid<Cell> seen_nav = layout::map_without_over_low(m.nav);
   r.rooms = rooms::find_rooms(seen_nav, m.geometry, params);
+  // A neck between furniture across one room, wider than a door and without jambs, is no door.
+  rooms::join_furniture_necks(r.rooms, m.layout.layout, border_params.door_max_m);
   r.inner_walls = rooms::inner_wall_objects(objs, m.geometry, r.rooms, params);
   // The polygons reach the walls of M_r (behind furniture too), never into an inner-wall strip
   // or a piece the objects step took for wall (the wall under a window, a wall's face).

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <opencv2/imgproc.hpp>
 #include <optional>
 #include <string>
 #include <utility>
@@ -117,6 +118,23 @@ void rooms_draw_polygons(RoomsResult& out, const Grid<std::uint16_t>& cells) {
     room.area_m2 = std::abs(signed_area(room.polygon_m));
     room.perimeter_m = perimeter(room.polygon_m);
   }
+}
+
+// The rooms (ids, cells, polygons), doors and neighbours from labels holding the ids 1..n.
+void rooms_rebuild(RoomsResult& out) {
+  int n = 0;
+  for (const auto l : out.labels.data) n = std::max(n, static_cast<int>(l));
+  out.rooms.assign(static_cast<std::size_t>(n), Room{});
+  for (int i = 0; i < n; ++i) out.rooms[static_cast<std::size_t>(i)].id = i + 1;
+  for (const auto l : out.labels.data)
+    if (l != 0) ++out.rooms[static_cast<std::size_t>(l - 1)].cells;
+  rooms_draw_polygons(out, out.labels);
+  out.doors = rooms_doors(out.labels, out.geometry);
+  for (const auto& d : out.doors) {
+    out.rooms[static_cast<std::size_t>(d.a - 1)].neighbours.push_back(d.b);
+    out.rooms[static_cast<std::size_t>(d.b - 1)].neighbours.push_back(d.a);
+  }
+  for (auto& r : out.rooms) std::sort(r.neighbours.begin(), r.neighbours.end());
 }
 
 /// Door passages: room cells near a door (within its half width plus two cells of its middle)
@@ -364,43 +382,73 @@ RoomsResult find_rooms(const Grid<Cell>& nav, const GridGeometry& g, const Rooms
   if (!any) return out;
   int count = 0;
   const Grid<int> seg = areas::segment_rooms(free, g.cell_m(), p.segmentation, &count);
-  // Pieces, their cell counts and boxes; small ones are no room; ids renumbered 1.. in order.
-  struct Box {
-    int cells = 0, c0 = 1 << 30, r0 = 1 << 30, c1 = -1, r1 = -1;
-  };
-  std::vector<Box> boxes(static_cast<std::size_t>(count) + 1);
-  for (int r = 0; r < seg.height; ++r)
-    for (int c = 0; c < seg.width; ++c) {
-      const int l = seg.at(c, r);
-      if (l <= 0 || l > count) continue;
-      Box& b = boxes[static_cast<std::size_t>(l)];
-      ++b.cells, b.c0 = std::min(b.c0, c), b.r0 = std::min(b.r0, r);
-      b.c1 = std::max(b.c1, c), b.r1 = std::max(b.r1, r);
-    }
+  // Pieces and their cell counts; small ones are no room; ids renumbered 1.. in order.
+  std::vector<int> cells(static_cast<std::size_t>(count) + 1, 0);
+  for (const int l : seg.data)
+    if (l > 0 && l <= count) ++cells[static_cast<std::size_t>(l)];
   const double cell_area = g.cell_m() * g.cell_m();
-  std::vector<int> new_id(boxes.size(), 0);
+  std::vector<int> new_id(cells.size(), 0);
   int n = 0;
-  for (std::size_t l = 1; l < boxes.size(); ++l)
-    if (boxes[l].cells > 0 && boxes[l].cells * cell_area >= p.min_room_area_m2) new_id[l] = ++n;
+  for (std::size_t l = 1; l < cells.size(); ++l)
+    if (cells[l] > 0 && cells[l] * cell_area >= p.min_room_area_m2) new_id[l] = ++n;
   for (std::size_t i = 0; i < seg.data.size(); ++i) {
     const int l = seg.data[i];
     if (l > 0 && l <= count) out.labels.data[i] = static_cast<std::uint16_t>(new_id[l]);
   }
-  for (std::size_t l = 1; l < boxes.size(); ++l) {
-    if (new_id[l] == 0) continue;
-    Room room;
-    room.id = new_id[l];
-    room.cells = boxes[l].cells;
-    out.rooms.push_back(std::move(room));
-  }
-  rooms_draw_polygons(out, out.labels);
-  out.doors = rooms_doors(out.labels, g);
-  for (const auto& d : out.doors) {
-    out.rooms[static_cast<std::size_t>(d.a - 1)].neighbours.push_back(d.b);
-    out.rooms[static_cast<std::size_t>(d.b - 1)].neighbours.push_back(d.a);
-  }
-  for (auto& r : out.rooms) std::sort(r.neighbours.begin(), r.neighbours.end());
+  rooms_rebuild(out);
   return out;
+}
+
+namespace {
+/// [m2] a piece of wall smaller than this stands free in a room (a pillar): no door's jamb.
+constexpr double kMaxPillar_m2 = 1.0;
+}  // namespace
+
+int join_furniture_necks(RoomsResult& out, const Grid<Cell>& layout, double door_max_m,
+                         double reach_m) {
+  const GridGeometry& g = out.geometry;
+  if (layout.width != out.labels.width || layout.height != out.labels.height) return 0;
+  const int reach = static_cast<int>(std::ceil(reach_m / g.cell_m()));
+  // The walls' pieces (8-neighbours); one smaller than kMaxPillar_m2 stands free in a room.
+  cv::Mat wall(layout.height, layout.width, CV_8U), lab, stats, centroids;
+  for (int r = 0; r < layout.height; ++r)
+    for (int c = 0; c < layout.width; ++c)
+      wall.at<std::uint8_t>(r, c) = layout.at(c, r) == Cell::kWall ? 1 : 0;
+  cv::connectedComponentsWithStats(wall, lab, stats, centroids, 8, CV_32S);
+  const double pillar_cells = kMaxPillar_m2 / (g.cell_m() * g.cell_m());
+  const auto jamb_near = [&](const Eigen::Vector2d& p) {
+    const CellIndex at = g.cell_of(p);
+    for (int r = at.row - reach; r <= at.row + reach; ++r)
+      for (int c = at.col - reach; c <= at.col + reach; ++c)
+        if ((c - at.col) * (c - at.col) + (r - at.row) * (r - at.row) <= reach * reach &&
+            layout.contains(c, r) && wall.at<std::uint8_t>(r, c) &&
+            stats.at<int>(lab.at<int>(r, c), cv::CC_STAT_AREA) >= pillar_cells)
+          return true;
+    return false;
+  };
+  std::vector<int> root(out.rooms.size() + 1);
+  for (std::size_t i = 0; i < root.size(); ++i) root[i] = static_cast<int>(i);
+  const auto find = [&](int a) {
+    while (root[static_cast<std::size_t>(a)] != a) a = root[static_cast<std::size_t>(a)];
+    return a;
+  };
+  int joined = 0;
+  for (const auto& d : out.doors) {
+    if (d.width_m <= door_max_m || jamb_near(d.end0_m) || jamb_near(d.end1_m)) continue;
+    const int a = find(d.a), b = find(d.b);
+    if (a == b) continue;
+    root[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+    ++joined;
+  }
+  if (joined == 0) return 0;
+  std::vector<std::uint16_t> new_id(root.size(), 0);
+  std::uint16_t n = 0;
+  for (std::size_t id = 1; id < root.size(); ++id)
+    if (find(static_cast<int>(id)) == static_cast<int>(id)) new_id[id] = ++n;
+  for (auto& l : out.labels.data)
+    if (l != 0) l = new_id[static_cast<std::size_t>(find(l))];
+  rooms_rebuild(out);
+  return joined;
 }
 
 int room_at(const RoomsResult& rooms, const Eigen::Vector2d& p, double max_m) {

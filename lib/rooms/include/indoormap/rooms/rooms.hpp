@@ -76,6 +76,17 @@ struct RoomsResult {
 RoomsResult find_rooms(const Grid<Cell>& nav, const GridGeometry& geometry,
                        const RoomsParams& params = {});
 
+/// Joins the rooms the segmentation split at a neck between furniture: a door wider than
+/// door_max_m neither of whose ends has a jamb within reach_m (a wall cell of the room layout M_r,
+/// `layout`, on the rooms' grid, in a piece of wall of at least 1 m2: a pillar is none) is no
+/// opening in a wall, but the narrowing between furniture and pillars across one room (an
+/// L-shaped room with a table at its bend). A door in a wall M_r saw only low (as furniture) has
+/// no jambs either; its width tells it apart. Labels, rooms, polygons and doors are rebuilt; ids
+/// stay in the order of the rooms' first pieces. Returns how many doors were joined across; a
+/// layout of another size joins none.
+int join_furniture_necks(RoomsResult& rooms, const Grid<Cell>& layout, double door_max_m = 1.2,
+                         double reach_m = 0.2);
+
 /// M_r with the bodies of walls seen from one side only marked as wall (nav: the navigation map
 /// the rooms were found in). Where M_r's wall band saw a wall between two rooms from one side only
 /// (a corridor's wall at a grazing angle, a face in a pillar's shadow, a face a mobile scanner
