@@ -238,43 +238,6 @@ void keep_main_parts(Grid<std::uint16_t>& grown) {
 
 }  // namespace
 
-namespace {
-
-/// [m] a room's growth through furniture deeper than this must be closed (drop_open_deep_growth).
-constexpr double kNearFill_m = 1.0;
-
-// The cells grown more than near_steps from a room's free cells stay only in pieces (4-neighbours,
-// one room's) that meet no unknown cell: a group of cabinets in a corner, closed by the walls,
-// is the room's; a piece that runs on to the unseen (past a wall seen only low, beside a block
-// whose faces were seen as furniture) is not.
-void drop_open_deep_growth(Grid<std::uint16_t>& grown, const Grid<int>& steps,
-                           const Grid<Cell>& layout, int near_steps) {
-  Grid<std::uint8_t> seen(grown.width, grown.height, 0);
-  std::vector<CellIndex> piece;
-  constexpr std::array<std::pair<int, int>, 4> kSteps{{{1, 0}, {-1, 0}, {0, 1}, {0, -1}}};
-  for (int r0 = 0; r0 < grown.height; ++r0)
-    for (int c0 = 0; c0 < grown.width; ++c0) {
-      if (seen.at(c0, r0) || steps.at(c0, r0) <= near_steps || grown.at(c0, r0) == 0) continue;
-      const std::uint16_t id = grown.at(c0, r0);
-      piece.assign(1, {c0, r0});
-      seen.at(c0, r0) = 1;
-      bool open = false;  // a cell beside it is unknown
-      for (std::size_t head = 0; head < piece.size(); ++head)
-        for (const auto& [dc, dr] : kSteps) {
-          const int c = piece[head].col + dc, r = piece[head].row + dr;
-          if (!grown.contains(c, r)) continue;
-          open |= layout.at(c, r) == Cell::kUnknown;
-          if (seen.at(c, r) || grown.at(c, r) != id || steps.at(c, r) <= near_steps) continue;
-          seen.at(c, r) = 1;
-          piece.push_back({c, r});
-        }
-      if (open)
-        for (const auto& at : piece) grown.at(at) = 0;
-    }
-}
-
-}  // namespace
-
 void fill_rooms(RoomsResult& out, const Grid<Cell>& layout, const Grid<std::uint8_t>& blocked,
                 double max_fill_m) {
   const Grid<std::uint16_t>& labels = out.labels;
@@ -317,8 +280,6 @@ void fill_rooms(RoomsResult& out, const Grid<Cell>& layout, const Grid<std::uint
       queue.push_back({c, r});
     }
   }
-  drop_open_deep_growth(grown, steps, layout,
-                        static_cast<int>(std::lround(kNearFill_m / out.geometry.cell_m())));
   rooms_draw_polygons(out, grown);
 }
 

@@ -107,7 +107,7 @@ Grid<Cell> mark_wall_bodies(const Grid<Cell>& layout, const Grid<Cell>& nav,
 /// Wall-bounded rooms: each room's cells grown (all rooms at once, 4-neighbours, first come
 /// first served) into the cells that are not free, up to max_fill_m (2 m: a group of cabinets
 /// filling a room's corner; at 1 m the buildings' rooms kept notches there, 3 m changes nothing
-/// more on them; past 1 m only in pieces that meet no unknown cell), stopping at the wall cells
+/// more on them), stopping at the wall cells
 /// of the room layout M_r (its wall band, seen above the furniture), at `blocked` cells (the
 /// inner-wall strips) and at other rooms' cells; the polygons (and areas, perimeters) are
 /// redrawn from the grown cells, so furniture and the unseen floor behind it along a wall no
