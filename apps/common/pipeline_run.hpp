@@ -50,9 +50,12 @@ struct AppSetup {
 std::optional<AppSetup> setup_pipeline_app(CLI::App& app, PipelineCli& cli, int argc, char** argv,
                                            int* exit_code);
 
-/// The objects of the map, and the time they took.
+/// The objects of the map, and the time they took. With drop_stray, without the pieces of stray
+/// returns (objects::drop_stray_pieces); without it, the caller drops them after the steps that
+/// need every piece.
 objects::ObjectsResult timed_objects(const layout::MapResult& map,
-                                     const objects::ObjectParams& params, double* ms);
+                                     const objects::ObjectParams& params, double* ms,
+                                     bool drop_stray = true);
 
 /// The room border of the map (border closure), and the time it took.
 border::BorderResult timed_border(const layout::MapResult& map, const border::BorderParams& params,

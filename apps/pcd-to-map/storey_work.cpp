@@ -11,8 +11,10 @@ StoreyWork compute_storey(int index, layout::MapResult map, const PipelineConfig
   StoreyWork w;
   w.index = index;
   w.map = std::move(map);
-  w.objs = timed_objects(w.map, cfg.objects, &w.objects_ms);
+  // The inner walls of a floor may be strips of stray returns: the rooms step sees every piece.
+  w.objs = timed_objects(w.map, cfg.objects, &w.objects_ms, false);
   w.rooms = find_storey_rooms(w.map, w.objs, cfg.border);  // drops the inner walls from the objects
+  objects::drop_stray_pieces(w.objs, w.map.geometry, cfg.objects);
   w.border = timed_border(w.map, cfg.border, &w.border_ms);
   w.furniture_count = w.objs.objects.size();
   add_border_objects(w.objs, w.border, cfg.objects.min_area_m2);

@@ -37,6 +37,7 @@ json object_json(const objects::FurnitureObject& o) {
       {"footprint", fp},
       {"point_count", o.point_count},
       {"seen_cells", o.seen_cells},
+      {"surface_cells", o.surface_cells},
       {"touches_wall", o.touches_wall},
       {"on_floor", o.on_floor},
   };

@@ -113,6 +113,18 @@ bool lintel_above(const cloud::VoxelGrid& g, int col, int row, std::int64_t floo
   return run_start >= 0 && g.nz - run_start >= min_run;  // up to the grid's top
 }
 
+bool surfaces_leave_several(const cloud::VoxelGrid& g, std::int64_t floor_layer) {
+  if (floor_layer < 0 || floor_layer >= g.nz) return false;
+  std::vector<std::uint16_t> counts;
+  for (std::int64_t r = 0; r < g.ny; ++r)
+    for (std::int64_t c = 0; c < g.nx; ++c)
+      if (const std::uint16_t n = g.count(c, r, floor_layer)) counts.push_back(n);
+  if (counts.empty()) return false;
+  const auto mid = counts.begin() + static_cast<std::ptrdiff_t>(counts.size() / 2);
+  std::nth_element(counts.begin(), mid, counts.end());
+  return *mid >= kSurfaceMinFloorPoints;
+}
+
 ColumnScan scan_columns(const Grid<Cell>& layout, const cloud::VoxelGrid& voxels,
                         const cloud::LayerAnalysis& layers, const ObjectParams& params,
                         Grid<std::uint8_t>& mask, bool dense) {
@@ -123,6 +135,7 @@ ColumnScan scan_columns(const Grid<Cell>& layout, const cloud::VoxelGrid& voxels
   ColumnScan s{Grid<Column>(w, h), Grid<std::uint8_t>(w, h, 0),
                cv::Mat(h, w, CV_8U, cv::Scalar(1))};
   if (dense) s.stray_max_points = kStrayMaxPointsDense;
+  s.surface_test = dense && surfaces_leave_several(voxels, layers.floor_layer);
   Grid<Column>& cols = s.cols;
   Grid<std::uint8_t>& pocket = s.pocket;
   cv::Mat& no_data = s.no_data;

@@ -96,7 +96,9 @@ struct Acc {
   std::int64_t bottom = std::numeric_limits<std::int64_t>::max(), top = -1;
   bool touches_wall = false;
   std::vector<std::int64_t> tops;  // per cell with data
-  std::int64_t lintel = 0;         // cells with data under a lintel (lintel_above)
+  std::int64_t solid = 0;   // cells with data holding more than a stray return (FurnitureObject::
+                            // surface_cells)
+  std::int64_t lintel = 0;  // cells with data under a lintel (lintel_above)
   // Cells with data that hang: the column's run starts at least hanging_min_clearance_m above
   // the floor and the floor under it was seen (hanging_cell), and the lowest of those starts.
   std::int64_t hanging = 0, hanging_bottom = std::numeric_limits<std::int64_t>::max();
@@ -126,10 +128,11 @@ bool hanging_cell(const Column& col, const cloud::VoxelGrid& voxels, int c, int 
 }
 
 // Per label: its cells, bounding box, voxel range and whether it touches a wall.
-std::vector<Acc> accumulate(const Labels& lab, const Grid<Column>& cols, const Grid<Cell>& layout,
+std::vector<Acc> accumulate(const Labels& lab, const ColumnScan& scan, const Grid<Cell>& layout,
                             const cloud::VoxelGrid& voxels, const cloud::LayerAnalysis& layers,
                             const ObjectParams& params,
                             const std::vector<Eigen::Vector3d>& scanners_map) {
+  const Grid<Column>& cols = scan.cols;
   const auto gap = static_cast<std::int64_t>(std::ceil(voxels.to_cells(kOpeningMinGap_m) - 1e-9));
   const auto clearance =
       static_cast<std::int64_t>(std::ceil(voxels.to_cells(params.hanging_min_clearance_m) - 1e-9));
@@ -149,6 +152,9 @@ std::vector<Acc> accumulate(const Labels& lab, const Grid<Column>& cols, const G
         a.bottom = std::min(a.bottom, col.bottom);
         a.top = std::max(a.top, col.top);
         a.tops.push_back(col.top);
+        // Where surfaces leave one or two returns to a cell themselves (a sparse scan, a
+        // resampled cloud), every seen cell counts.
+        a.solid += !scan.surface_test || col.points > scan.stray_max_points;
         a.lintel += lintel_above(voxels, c, r, layers.floor_layer, layers.ceiling_layer, gap, run);
         if (hanging_cell(col, voxels, c, r, layers.floor_layer, clearance, scanners_map)) {
           ++a.hanging;
@@ -200,6 +206,7 @@ void list_objects(const std::vector<Acc>& acc, const Labels& lab, const GridGeom
     new_id[id] = o.id;
     o.cells = a.cells;
     o.seen_cells = static_cast<std::int64_t>(a.tops.size());
+    o.surface_cells = a.solid;
     o.start_cell = a.start;
     o.min_cell = a.lo;
     o.max_cell = a.hi;
@@ -352,8 +359,7 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
       split_at_necks(join_fragments(label_objects(mask, top, geo, params, scan.any_data), heights,
                                     geo.cell_m(), params),
                      solid, geo.cell_m(), params);
-  const std::vector<Acc> acc =
-      accumulate(lab, scan.cols, layout, voxels, layers, params, scanners_map);
+  const std::vector<Acc> acc = accumulate(lab, scan, layout, voxels, layers, params, scanners_map);
   list_objects(acc, lab, geo, voxels, layers, params, res);
   res.left_over_pieces = lab.count - static_cast<std::int64_t>(res.objects.size());
   for (std::size_t i = 0; i < layout.size(); ++i)
@@ -382,6 +388,23 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
     o.id = id;
   }
   return res;
+}
+
+void drop_stray_pieces(ObjectsResult& res, const GridGeometry& geo, const ObjectParams& params) {
+  const double cell_area = geo.cell_m() * geo.cell_m();
+  std::erase_if(res.objects, [&](const FurnitureObject& o) {
+    if (o.kind != ObjectKind::kFurniture && o.kind != ObjectKind::kHanging) return false;
+    if (static_cast<double>(o.surface_cells) * cell_area >= params.min_seen_area_m2 ||
+        2 * o.surface_cells >= o.seen_cells)
+      return false;
+    for (int r = o.min_cell.row; r <= o.max_cell.row; ++r)
+      for (int c = o.min_cell.col; c <= o.max_cell.col; ++c)
+        if (res.labels.at(c, r) == o.id) res.labels.at(c, r) = 0;
+    res.left_over_cells += o.cells;
+    res.left_over_area_m2 += static_cast<double>(o.cells) * cell_area;
+    ++res.left_over_pieces;
+    return true;
+  });
 }
 
 }  // namespace indoormap::objects

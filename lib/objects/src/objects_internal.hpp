@@ -72,6 +72,13 @@ bool lintel_above(const cloud::VoxelGrid& g, int col, int row, std::int64_t floo
 constexpr double kOpeningMinGap_m = 0.3;  // a window is taller (the simulator's: 1.2 m or more)
 constexpr double kLintelMin_m = 0.3;      // a lamp (0.06 m) and the ceiling's smear are thinner
 
+// The median occupied cell of the floor layer holds at least this many points: a surface leaves
+// several returns to a cell. A sparse scan's floor holds one or two, and so does a cloud
+// resampled to the cell size (one point per 5 cm voxel), whose surfaces cannot be told from
+// stray returns by their count.
+constexpr std::int64_t kSurfaceMinFloorPoints = 4;
+bool surfaces_leave_several(const cloud::VoxelGrid& g, std::int64_t floor_layer);
+
 /// Column extents of the furniture cells (scan_columns; `dense`: a dense scan's stray test); cells
 /// whose floor is seen and nothing stands on leave the mask.
 struct ColumnScan {
@@ -80,6 +87,10 @@ struct ColumnScan {
   cv::Mat no_data;
   bool any_data = false;
   std::int64_t stray_max_points = kStrayMaxPoints;  // kStrayMaxPointsDense on a dense scan
+  // Seen cells of at most stray_max_points are strays, not surface (FurnitureObject::
+  // surface_cells): a dense scan whose surfaces leave several returns to a cell, as its floor
+  // shows (surfaces_leave_several).
+  bool surface_test = false;
   bool surface_first = false;  // fill_tops: the nearest surface's top before a stray's (moving)
 };
 

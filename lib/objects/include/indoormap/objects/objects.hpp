@@ -34,7 +34,7 @@ struct ObjectParams {
   /// An object needs this much seen area (seen_cells): less is a pocket the layout filled along a
   /// wall, or a wall's face, with a few stray points, not furniture (it is left over).
   /// 0.04: the smallest simulated bin (0.045 m2) is lower than the scanner, so its whole top is
-  /// seen.
+  /// seen. As much of it must be surface, unless most of it is (drop_stray_pieces).
   double min_seen_area_m2 = 0.04;
   Connectivity connectivity = Connectivity::k4;  ///< the paper's choice
   double crop_margin_m = 0.05;  ///< crops take the footprint dilated by this much, and z +- it
@@ -101,6 +101,12 @@ struct FurnitureObject {
   /// Cells whose own column holds the object's points (not filled in from a neighbour, not a
   /// wall's face): the part of the footprint the scanner saw.
   std::int64_t seen_cells = 0;
+  /// Seen cells whose column holds more than a stray return (a mixed pixel, range noise): the
+  /// part of the footprint where the scanner saw a surface (drop_stray_pieces). Where surfaces
+  /// themselves leave one or two returns to a cell (a sparse scan, ScanTraits::dense false; a
+  /// cloud whose median floor cell holds fewer than 4 points, such as one resampled to 5 cm),
+  /// every seen cell.
+  std::int64_t surface_cells = 0;
   bool touches_wall = false;  ///< a cell is 8-adjacent to a wall cell
   /// The object's cells when they are not those of `labels` (a lamp over a table shares its
   /// cells with it); empty otherwise.
@@ -137,6 +143,17 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geom
                               const ObjectParams& params = {},
                               const std::vector<Eigen::Vector3d>& scanners_map = {},
                               const ScanTraits& traits = {});
+
+/// Drops the objects (furniture and hanging) with less than params.min_seen_area_m2 of surface
+/// cells (FurnitureObject::surface_cells) that are also less than half of their seen cells: what
+/// they hold is stray returns (mixed pixels behind an edge, range noise that no ray evidence
+/// removed; a moving scan without positions has no ghost filter), no surface. A surface leaves
+/// several points in each 5 cm cell it covers; a bin seen from one side, only on its near half.
+/// They count as left over. extract_objects lists them, since a step that needs every piece of
+/// the furniture class (the inner walls of a floor, seen only as sparse strips) must see them
+/// first; call this after it.
+void drop_stray_pieces(ObjectsResult& result, const GridGeometry& geometry,
+                       const ObjectParams& params = {});
 
 /// Indices of the points (map frame, same order as given) inside each object's crop region: the
 /// footprint cells dilated by crop_margin_m, heights within [z_min - margin, z_max + margin].
