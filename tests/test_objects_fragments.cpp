@@ -199,6 +199,34 @@ TEST(ObjectFragments, APatchOfStrayReturnsIsNoObject) {
   }
 }
 
+// Without scanner positions no ghost filter removes the mixed pixels behind an object's edges:
+// a fringe of single returns around a cabinet widens it. With ScanTraits::peel_strays the
+// fringe is left over and the cabinet keeps its own cells; without, the fringe is part of it.
+TEST(ObjectFragments, PeelingStrayReturnsLeavesTheCabinetItsFaces) {
+  const int w = 40, h = 30;
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  Grid<Cell> L(w, h, Cell::kFree);
+  auto g = voxels(w, h, 40);
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) fill_column(g, c, r, 0.0, 0.05, 6);
+  block(L, g, 10, 25, 10, 17, 1.0);  // 16 x 8 cells
+  for (int r = 7; r <= 20; ++r)      // a fringe three cells wide, one return per column
+    for (int c = 7; c <= 28; ++c)
+      if (L.at(c, r) != Cell::kFurniture) {
+        L.at(c, r) = Cell::kFurniture;
+        fill_column(g, c, r, 0.95, 1.0, 1);
+      }
+  const ObjectParams p;
+  for (const bool peel : {false, true}) {
+    const auto res =
+        extract_objects(L, geo, g, flat_layers(), p, {}, ScanTraits{true, false, peel});
+    ASSERT_EQ(res.objects.size(), 1u) << "peel " << peel;
+    EXPECT_EQ(res.objects[0].cells, peel ? 16 * 8 : 22 * 14) << "peel " << peel;
+    EXPECT_EQ(res.left_over_cells, peel ? 22 * 14 - 16 * 8 : 0);
+    expect_accounted(L, res, p);
+  }
+}
+
 namespace {
 
 // A slab of furniture cells [c0, c1] x [r0, r1] between z0_m and z1_m (a seat, a table top), on

@@ -98,15 +98,20 @@ std::optional<AppSetup> setup_pipeline_app(CLI::App& app, PipelineCli& cli, int 
   return s;
 }
 
+bool strays_unfiltered(const layout::MapResult& m) {
+  return m.cloud_map.scanners.empty();
+}
+
 objects::ObjectsResult timed_objects(const layout::MapResult& m,
                                      const objects::ObjectParams& params, double* ms,
-                                     bool drop_stray) {
+                                     bool strays_out) {
   const auto t = std::chrono::steady_clock::now();
   objects::ObjectsResult r = objects::extract_objects(
       m.layout.layout, m.geometry, m.voxels, m.layers, params, m.cloud_map.scanners,
-      objects::ScanTraits{m.dense_scan, m.cloud_map.scanners_on_path});
-  if (drop_stray) objects::drop_stray_pieces(r, m.geometry, params);
-  *ms = ms_since(t);
+      objects::ScanTraits{m.dense_scan, m.cloud_map.scanners_on_path,
+                          strays_out && strays_unfiltered(m)});
+  if (strays_out) objects::drop_stray_pieces(r, m.geometry, params);
+  *ms += ms_since(t);
   return r;
 }
 

@@ -50,12 +50,19 @@ struct AppSetup {
 std::optional<AppSetup> setup_pipeline_app(CLI::App& app, PipelineCli& cli, int argc, char** argv,
                                            int* exit_code);
 
-/// The objects of the map, and the time they took. With drop_stray, without the pieces of stray
-/// returns (objects::drop_stray_pieces); without it, the caller drops them after the steps that
-/// need every piece.
+/// True when no ray evidence removed the map's stray returns (mixed pixels): no scanner position,
+/// so no ghost filter. (Along a moving scanner's path the ghost filter removes most of them, and
+/// leaving out the cells of one or two returns then costs more of the objects' own thin faces,
+/// bins and table edges, than it removes: second tuning set, recall 0.809 -> 0.791.)
+bool strays_unfiltered(const layout::MapResult& map);
+
+/// The objects of the map, and the time they took (added to *ms). With strays_out, the pieces
+/// made of stray returns are dropped (objects::drop_stray_pieces) and, where strays_unfiltered,
+/// the stray cells are left out of the objects (objects::ScanTraits::peel_strays); without it
+/// every piece is whole, for the steps that need every piece (the rooms of a floor).
 objects::ObjectsResult timed_objects(const layout::MapResult& map,
                                      const objects::ObjectParams& params, double* ms,
-                                     bool drop_stray = true);
+                                     bool strays_out = true);
 
 /// The room border of the map (border closure), and the time it took.
 border::BorderResult timed_border(const layout::MapResult& map, const border::BorderParams& params,

@@ -45,6 +45,31 @@ StoreyRooms find_storey_rooms(const layout::MapResult& m, objects::ObjectsResult
   return r;
 }
 
+void remove_objects_on(objects::ObjectsResult& objs, const Grid<std::int32_t>& pieces,
+                       const StoreyRooms& r) {
+  std::vector<int> dropped = r.inner_walls;
+  dropped.insert(dropped.end(), r.wall_pieces.begin(), r.wall_pieces.end());
+  if (dropped.empty() || pieces.data.size() != objs.labels.data.size()) return;
+  std::vector<std::int64_t> on(objs.objects.size() + 1, 0);
+  std::vector<int> index_of;  // object id -> index + 1
+  for (std::size_t i = 0; i < objs.objects.size(); ++i) {
+    const int id = objs.objects[i].id;
+    if (id >= static_cast<int>(index_of.size())) index_of.resize(id + 1, 0);
+    index_of[id] = static_cast<int>(i) + 1;
+  }
+  for (std::size_t c = 0; c < pieces.data.size(); ++c) {
+    const int id = objs.labels.data[c];
+    if (id > 0 && id < static_cast<int>(index_of.size()) && index_of[id] > 0 &&
+        std::find(dropped.begin(), dropped.end(), pieces.data[c]) != dropped.end())
+      ++on[index_of[id]];
+  }
+  std::vector<int> ids;
+  for (std::size_t i = 0; i < objs.objects.size(); ++i)
+    if (objs.objects[i].own_cells.empty() && 2 * on[i + 1] >= objs.objects[i].cells)
+      ids.push_back(objs.objects[i].id);
+  rooms::remove_objects(objs, ids);
+}
+
 void assign_rooms(StoreyRooms& r, const objects::ObjectsResult& objs) {
   r.object_rooms = rooms::object_rooms(objs, r.rooms);
 }

@@ -33,6 +33,13 @@ void assign_rooms(StoreyRooms& r, const objects::ObjectsResult& objs);
 
 /// Writes rooms.geojson, rooms.json and rooms.png into out; returns the summary block (with its
 /// "outputs").
+/// Drops from objs the objects that lie mostly (half their cells or more) on the pieces that r
+/// dropped as inner walls or as lying in a wall; `pieces` holds those pieces' ids per cell (the
+/// labels of the extraction find_storey_rooms was given). For objects extracted again from the
+/// same map, without its stray returns.
+void remove_objects_on(objects::ObjectsResult& objs, const Grid<std::int32_t>& pieces,
+                       const StoreyRooms& r);
+
 nlohmann::json write_rooms_outputs(const std::filesystem::path& out, const layout::MapResult& m,
                                    const objects::ObjectsResult& objs, const StoreyRooms& r);
 

@@ -13,8 +13,15 @@ StoreyWork compute_storey(int index, layout::MapResult map, const PipelineConfig
   w.map = std::move(map);
   // The inner walls of a floor may be strips of stray returns: the rooms step sees every piece.
   w.objs = timed_objects(w.map, cfg.objects, &w.objects_ms, false);
+  const Grid<std::int32_t> pieces = w.objs.labels;
   w.rooms = find_storey_rooms(w.map, w.objs, cfg.border);  // drops the inner walls from the objects
-  objects::drop_stray_pieces(w.objs, w.map.geometry, cfg.objects);
+  if (strays_unfiltered(w.map)) {
+    // The objects again without the stray cells; those on what the rooms took for wall leave.
+    w.objs = timed_objects(w.map, cfg.objects, &w.objects_ms, true);
+    remove_objects_on(w.objs, pieces, w.rooms);
+  } else {
+    objects::drop_stray_pieces(w.objs, w.map.geometry, cfg.objects);
+  }
   w.border = timed_border(w.map, cfg.border, &w.border_ms);
   w.furniture_count = w.objs.objects.size();
   add_border_objects(w.objs, w.border, cfg.objects.min_area_m2);

@@ -347,6 +347,11 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
                          : cloud::floor_fill(voxels, layers.floor_layer) >= kDenseFloorFill;
   ColumnScan scan = scan_columns(layout, voxels, layers, params, mask, dense);
   scan.surface_first = traits.moving;
+  if (traits.peel_strays && scan.surface_test)
+    for (std::size_t i = 0; i < mask.size(); ++i)
+      if (mask.data[i] && scan.cols.data[i].top >= 0 &&
+          scan.cols.data[i].points <= scan.stray_max_points)
+        mask.data[i] = 0;  // left over
   const Grid<float> top = fill_tops(geo, voxels, scan, scanners_map, mask);
   PieceHeights heights{top, Grid<float>(w, h, kNoHeight), layers.floor_z_m, voxels.cell_m};
   for (std::size_t i = 0; i < mask.size(); ++i)

@@ -68,6 +68,12 @@ struct ScanTraits {
   /// The positions are a moving scanner's path (PointCloud::scanners_on_path): a cell without
   /// data takes the nearest surface's top before a nearer stray's (furniture-extract.md, step 2).
   bool moving = false;
+  /// Leave out the cells of stray returns (FurnitureObject::surface_cells) before labelling: for
+  /// a scan whose stray returns no ray evidence removed (no scanner positions, no ghost filter),
+  /// their mixed pixels spread the objects beyond their faces. Off: every piece whole (the rooms of
+  /// a floor need the inner walls' strips). Only where the count tells a stray
+  /// (ColumnScan::surface_test).
+  bool peel_strays = false;
 };
 
 /// Checks ranges. Throws UsageError naming the key ("invalid parameter objects.<key>: ...").
