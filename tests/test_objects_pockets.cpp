@@ -147,6 +147,31 @@ TEST(Objects, ThinStripsAlongAWallAreItsFaceNotObjects) {
   EXPECT_NEAR(res.left_over_area_m2, 32 * 0.0025, 1e-12);
 }
 
+TEST(Objects, SpecksOfWallOnAShelfsTopDoNotMakeItAFace) {
+  // A shelf 8 cells (0.4 m) deep along the north wall of a 40 x 30 room, whose top reached the
+  // wall band in a few places: specks of wall cells on it. Within three cells of those specks
+  // lies most of the shelf, but they are no wall: the shelf stays an object. The same specks
+  // on a wall seen only in fragments (beside free floor) still make a thin strip a face.
+  const int w = 40, h = 30;
+  Grid<Cell> L = walled_room(w, h);
+  auto g = voxels(w, h, 50);
+  put_block(L, g, 8, 23, 21, 28, 1.9);
+  for (const int c : {10, 15, 20})
+    for (int r = 23; r <= 24; ++r) L.at(c, r) = L.at(c + 1, r) = Cell::kWall;
+  // A wall in fragments across the room (row 12, every third pair of cells) and the face strip
+  // south of it, two cells deep.
+  for (int c = 8; c <= 23; c += 3) L.at(c, 12) = L.at(c + 1, 12) = Cell::kWall;
+  put_block(L, g, 8, 23, 10, 11, 1.8);
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  const auto res = extract_objects(L, geo, g, flat_layers(), every_size());
+  ASSERT_EQ(res.objects.size(), 1u);
+  EXPECT_EQ(res.labels.at(12, 22), res.objects[0].id);  // the shelf
+  EXPECT_EQ(res.objects[0].cells, 16 * 8 - 12);
+  EXPECT_EQ(res.wall_cells.at(12, 22), 0);
+  EXPECT_EQ(res.labels.at(12, 10), 0);  // the strip: the fragments' face
+  EXPECT_EQ(res.wall_cells.at(12, 10), 1);
+}
+
 TEST(Objects, ThinStripsBesideTheUnseenWorldAreFacesNotWalls) {
   // A 40 x 30 room whose east part was never seen: columns 32-39 are unknown up to the map's
   // edge (the far end of a corridor, its wall band unseen). Along that edge a strip two cells

@@ -259,14 +259,49 @@ void measure_objects(const GridGeometry& geo, const cloud::VoxelGrid& voxels, Ob
   }
 }
 
+// Clears from `wall` (1 on the layout's wall cells) the specks on furniture: pieces of wall cells
+// smaller than kMaxSpeckM2 whose ring of neighbouring cells is mostly furniture. The top of a
+// shelf that reaches the wall band leaves such specks on the shelf; they are no wall its cells
+// could be the face of (second tuning set: two shelves against a wall lost). A wall seen only in
+// fragments keeps them: free or unknown space lies beside its pieces.
+void drop_specks_on_furniture(const Grid<Cell>& layout, double cell_m, cv::Mat& wall) {
+  constexpr double kMaxSpeckM2 = 0.1;  // a pillar of 0.3 x 0.3 m is larger
+  cv::Mat pieces, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(wall, pieces, stats, centroids, 8, CV_32S);
+  const int max_cells = static_cast<int>(std::ceil(kMaxSpeckM2 / (cell_m * cell_m)));
+  std::vector<int> ring(static_cast<std::size_t>(n), 0), ring_furniture(ring);
+  for (int r = 0; r < layout.height; ++r)
+    for (int c = 0; c < layout.width; ++c) {
+      if (layout.at(c, r) == Cell::kWall) continue;
+      int seen[8], m = 0;  // the pieces this cell borders, each once
+      for (int dr = -1; dr <= 1; ++dr)
+        for (int dc = -1; dc <= 1; ++dc) {
+          if (!layout.contains(c + dc, r + dr)) continue;
+          const int k = pieces.at<int>(r + dr, c + dc);
+          if (k > 0 && std::find(seen, seen + m, k) == seen + m) seen[m++] = k;
+        }
+      for (int i = 0; i < m; ++i) {
+        ++ring[seen[i]];
+        ring_furniture[seen[i]] += layout.at(c, r) == Cell::kFurniture;
+      }
+    }
+  for (int r = 0; r < layout.height; ++r)
+    for (int c = 0; c < layout.width; ++c)
+      if (const int k = pieces.at<int>(r, c); k > 0 &&
+                                              stats.at<int>(k, cv::CC_STAT_AREA) < max_cells &&
+                                              2 * ring_furniture[k] > ring[k])
+        wall.at<std::uint8_t>(r, c) = 0;
+}
+
 // A piece lying almost wholly within kWallFaceCells of a wall, and longer along the wall than
 // across, is the wall's face seen in the furniture band without its wall-band part (the far face
 // of a wall seen at a grazing angle, a doorway's reveal under its lintel, the face of a wall
 // whose top ends in a low room), not furniture standing in front of the wall: the thinnest item
 // (a shelf, 0.3 m deep) reaches beyond that zone (0.15 m). A compact piece (a bin in a corner)
 // stays. Such pieces leave the list and count as left over; those beside a wall are marked in
-// wall_cells (the unseen world below is no wall).
-void drop_wall_faces(const Grid<Cell>& layout, ObjectsResult& res) {
+// wall_cells (the unseen world below is no wall). Specks of wall on furniture are no wall here
+// (drop_specks_on_furniture).
+void drop_wall_faces(const Grid<Cell>& layout, double cell_m, ObjectsResult& res) {
   constexpr double kMinFaceShare = 0.8, kMinElongation = 1.5, kThinnestItemM = 0.3;
   cv::Mat wall(layout.height, layout.width, CV_8U), unknown(layout.height, layout.width, CV_8U);
   for (int r = 0; r < layout.height; ++r)
@@ -274,6 +309,7 @@ void drop_wall_faces(const Grid<Cell>& layout, ObjectsResult& res) {
       wall.at<std::uint8_t>(r, c) = layout.at(c, r) == Cell::kWall ? 1 : 0;
       unknown.at<std::uint8_t>(r, c) = layout.at(c, r) == Cell::kUnknown ? 1 : 0;
     }
+  drop_specks_on_furniture(layout, cell_m, wall);
   // The unknown that reaches the map's edge is the unseen world beyond the scan: a wall whose
   // wall band was not seen (the far end of a corridor, a face seen through a door under its
   // lintel) borders it. Such a face leaves the list too, but is not marked as wall: the rooms
@@ -370,7 +406,7 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
   for (std::size_t i = 0; i < layout.size(); ++i)
     res.left_over_cells += layout.data[i] == Cell::kFurniture && res.labels.data[i] == 0;
   measure_objects(geo, voxels, res);
-  drop_wall_faces(layout, res);
+  drop_wall_faces(layout, geo.cell_m(), res);
   res.left_over_area_m2 = static_cast<double>(res.left_over_cells) * geo.cell_m() * geo.cell_m();
   if (params.pillar_max_extent_m > 0) add_pillars(layout, geo, voxels, layers, params, res);
   if (params.lamp_max_extent_m > 0) add_lamps(layout, geo, voxels, layers, params, res);
