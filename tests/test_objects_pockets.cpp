@@ -373,3 +373,63 @@ TEST(Objects, AShelfsUnseenBodyTakesItsOwnFacesTopNotTheOneAcrossTheWall) {
   EXPECT_NEAR(cabinet.z_max_m, 0.8, 0.06);
   EXPECT_LT(cells_of(false).first.cells, 13 * 10);
 }
+
+// A shelf (1.8 m) against a wall, seen by a moving scanner as its front face only. One row of the
+// face (a cell the rotated face crosses at a corner) holds its lower samples only, up to 1.3 m.
+// The body's cells behind that row take the face's top (the median of the face cells around the
+// nearest one), not that cell's: the shelf is one object, not a strip cut off by the height rule.
+TEST(Objects, AShelfsBodyTakesItsFacesTopNotThatOfACellItCrossesAtACorner) {
+  constexpr int w = 30, h = 20;
+  Grid<Cell> layout = walled_room(w, h);
+  cloud::VoxelGrid grid = voxels(w, h, 50);
+  wall_across(layout, grid, 25);
+  for (int r = 5; r <= 14; ++r) {
+    for (int c = 12; c <= 24; ++c) layout.at(c, r) = Cell::kFurniture;
+    for (int c = 12; c <= 13; ++c) fill_column(grid, c, r, 0.0, r == 9 ? 1.3 : 1.8);
+  }
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  const auto res =
+      extract_objects(layout, geo, grid, flat_layers(), every_size(), kLeftSidePath, {false, true});
+  const int body = res.labels.at(20, 9);
+  ASSERT_NE(body, 0);
+  EXPECT_EQ(res.labels.at(20, 5), body);
+  EXPECT_EQ(res.labels.at(20, 14), body);
+  for (const auto& o : res.objects)
+    if (o.id == body) {
+      EXPECT_GE(o.cells, 13 * 10 - 2);  // the lower face cells may stand apart
+      EXPECT_NEAR(o.z_max_m, 1.8, 0.06);
+    }
+}
+
+// Without scanner positions (ScanTraits::peel_strays) on a dense scan: a cabinet (1.1 m) against
+// a wall seen as its front face only, and beside the wall a strip of returns off the wall above
+// it (1.8 m, 3 points a column: more than a stray's). The body's cells take the top of the nearest
+// surface away from the wall (the front), not the nearer strip's: one object, 1.1 m high, and the
+// strip keeps its own height.
+TEST(Objects, WithoutPositionsAHiddenBodyTakesTheTopOfASurfaceAwayFromTheWall) {
+  constexpr int w = 30, h = 20;
+  Grid<Cell> layout = walled_room(w, h);
+  cloud::VoxelGrid grid = voxels(w, h, 50);
+  wall_across(layout, grid, 25);
+  for (int r = 5; r <= 14; ++r) {
+    for (int c = 12; c <= 24; ++c) layout.at(c, r) = Cell::kFurniture;
+    for (int c = 12; c <= 13; ++c) fill_column(grid, c, r, 0.0, 1.1, 6);  // the front face
+    fill_column(grid, 24, r, 1.8, 1.85, 3);                               // returns off the wall
+  }
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c)
+      if (layout.at(c, r) == Cell::kFree) fill_column(grid, c, r, 0.0, 0.05, 6);  // the floor
+  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  const auto cabinet = [&](bool peel) {
+    const auto res =
+        extract_objects(layout, geo, grid, flat_layers(), every_size(), {}, {true, false, peel});
+    const int id = res.labels.at(13, 9);
+    for (const auto& o : res.objects)
+      if (o.id == id) return std::pair{o.cells, o.z_max_m};
+    return std::pair{std::int64_t{0}, 0.0};
+  };
+  const auto [cells, z] = cabinet(true);
+  EXPECT_EQ(cells, 12 * 10);  // face and body; the strip along the wall apart
+  EXPECT_NEAR(z, 1.1, 0.06);
+  EXPECT_LT(cabinet(false).first, 12 * 10);  // the nearest data decides: the strip's top cuts it
+}

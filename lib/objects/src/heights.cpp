@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -132,8 +133,10 @@ ColumnScan scan_columns(const Grid<Cell>& layout, const cloud::VoxelGrid& voxels
   const int w = layout.width, h = layout.height;
   const auto max_gap =
       static_cast<std::int64_t>(std::ceil(voxels.to_cells(params.max_vertical_gap_m)));
-  ColumnScan s{Grid<Column>(w, h), Grid<std::uint8_t>(w, h, 0),
-               cv::Mat(h, w, CV_8U, cv::Scalar(1))};
+  ColumnScan s;
+  s.cols = Grid<Column>(w, h);
+  s.pocket = Grid<std::uint8_t>(w, h, 0);
+  s.no_data = cv::Mat(h, w, CV_8U, cv::Scalar(1));
   if (dense) s.stray_max_points = kStrayMaxPointsDense;
   s.surface_test = dense && surfaces_leave_several(voxels, layers.floor_layer);
   Grid<Column>& cols = s.cols;
@@ -349,22 +352,64 @@ constexpr double kSurfaceReachCells = 16.0;
 
 // The nearest surface cell of every cell, through the mask (nearest_data_within; col -1
 // everywhere when there is none).
+// `off_walls_only`: only the surface cells of ColumnScan::off_walls.
 Grid<CellIndex> nearest_surface(const Grid<Column>& cols, const cv::Mat& no_data,
-                                const ColumnScan& scan, const Grid<std::uint8_t>& mask) {
+                                const ColumnScan& scan, const Grid<std::uint8_t>& mask,
+                                bool off_walls_only) {
   cv::Mat no_surface = no_data.clone();
   bool any = false;
   for (int r = 0; r < no_data.rows; ++r)
     for (int c = 0; c < no_data.cols; ++c)
       if (!no_data.at<std::uint8_t>(r, c)) {
-        const bool stray = cols.at(c, r).points <= scan.stray_max_points;
-        no_surface.at<std::uint8_t>(r, c) = stray ? 1 : 0;
-        any = any || !stray;
+        const bool surface = cols.at(c, r).points > scan.stray_max_points &&
+                             (!off_walls_only || scan.off_walls.at(c, r));
+        no_surface.at<std::uint8_t>(r, c) = surface ? 0 : 1;
+        any = any || surface;
       }
   if (!any) return Grid<CellIndex>(no_data.cols, no_data.rows, CellIndex{-1, -1});
   return nearest_data_within(no_surface, mask);
 }
 
+// The top a face carries over the cells it hides: that of surface cell s, or the median of the
+// surface tops in its 3 x 3 neighbourhood when higher. A cell that a rotated face crosses at a
+// corner holds fewer of its samples, and its top is lower: the body behind a shelf's front took
+// 1.3 m from one such cell and 1.8 m from the next, and the height split cut it into strips that
+// the wall-face rule then dropped. The median keeps a lone higher cell (a pillar's beside the
+// shelf) from lifting it.
+std::int64_t face_top(const Grid<Column>& cols, const cv::Mat& no_data, const ColumnScan& scan,
+                      const Grid<std::uint8_t>& mask, CellIndex s) {
+  std::array<std::int64_t, 9> tops{};
+  std::size_t n = 0;
+  for (int dr = -1; dr <= 1; ++dr)
+    for (int dc = -1; dc <= 1; ++dc) {
+      const int c = s.col + dc, r = s.row + dr;
+      if (!mask.contains(c, r) || !mask.at(c, r) || no_data.at<std::uint8_t>(r, c)) continue;
+      if (cols.at(c, r).points > scan.stray_max_points) tops[n++] = cols.at(c, r).top;
+    }
+  if (n == 0) return cols.at(s).top;
+  std::nth_element(tops.begin(), tops.begin() + static_cast<std::ptrdiff_t>(n / 2),
+                   tops.begin() + static_cast<std::ptrdiff_t>(n));
+  return std::max(cols.at(s).top, tops[n / 2]);
+}
+
 }  // namespace
+
+Grid<std::uint8_t> surfaces_off_walls(const Grid<Cell>& layout, const ColumnScan& scan,
+                                      const Grid<std::uint8_t>& mask) {
+  const int w = mask.width, h = mask.height;
+  cv::Mat wall(h, w, CV_8U, cv::Scalar(0)), near_wall;
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) wall.at<std::uint8_t>(r, c) = layout.at(c, r) == Cell::kWall;
+  cv::dilate(
+      wall, near_wall,
+      cv::getStructuringElement(cv::MORPH_RECT, {2 * kWallFaceCells + 1, 2 * kWallFaceCells + 1}));
+  Grid<std::uint8_t> out(w, h, 0);
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c)
+      out.at(c, r) = mask.at(c, r) && scan.cols.at(c, r).points > scan.stray_max_points &&
+                     !near_wall.at<std::uint8_t>(r, c);
+  return out;
+}
 
 Grid<float> fill_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
                       const ColumnScan& scan, const std::vector<Eigen::Vector3d>& scanners_map,
@@ -384,24 +429,33 @@ Grid<float> fill_tops(const GridGeometry& geo, const cloud::VoxelGrid& voxels,
         scan.surface_first ? nearest_data_within(no_data, mask) : nearest_data(no_data);
     const cv::Mat near_data = between_samples(cols, no_data, nearest, pocket, mask);
     const Grid<CellIndex> surface =
-        scan.surface_first ? nearest_surface(cols, no_data, scan, mask) : Grid<CellIndex>{};
+        scan.surface_first ? nearest_surface(cols, no_data, scan, mask, false) : Grid<CellIndex>{};
+    const Grid<CellIndex> off_walls = scan.surface_first && !scan.off_walls.data.empty()
+                                          ? nearest_surface(cols, no_data, scan, mask, true)
+                                          : Grid<CellIndex>{};
+    auto within_reach = [](CellIndex q, int c, int r) {
+      return q.col >= 0 && std::hypot(q.col - c, q.row - r) <= kSurfaceReachCells;
+    };
     for (int r = 0; r < h; ++r)
       for (int c = 0; c < w; ++c)
         if (mask.at(c, r)) {
           CellIndex s = nearest.at(c, r);
+          std::int64_t t = cols.at(s).top;
           if (!surface.data.empty() && no_data.at<std::uint8_t>(r, c)) {
-            const CellIndex q = surface.at(c, r);
-            if (q.col >= 0 && std::hypot(q.col - c, q.row - r) <= kSurfaceReachCells) s = q;
+            if (!off_walls.data.empty() && within_reach(off_walls.at(c, r), c, r))
+              s = off_walls.at(c, r);
+            else if (within_reach(surface.at(c, r), c, r))
+              s = surface.at(c, r);
+            t = face_top(cols, no_data, scan, mask, s);
           }
-          top.at(c, r) = static_cast<float>(voxels.layer_center_m(cols.at(s).top));
+          top.at(c, r) = static_cast<float>(voxels.layer_center_m(t));
           // A pocket cell (no data, floor unseen) is the hidden part of the object next to it
           // only if that object's top surface, carried over the cell, would be hidden too. A
           // scanner that could see it there and saw nothing proves the object ends before it:
           // the shadow behind a bin, fenced in by other obstacles, is not part of the bin (where
           // a beam passed: seen_by_a_scanner).
           if (!pocket.at(c, r) || near_data.at<std::uint8_t>(r, c)) continue;
-          if (seen_by_a_scanner(geo, voxels, scanners_map,
-                                top_target(geo, voxels, c, r, cols.at(s).top))) {
+          if (seen_by_a_scanner(geo, voxels, scanners_map, top_target(geo, voxels, c, r, t))) {
             mask.at(c, r) = 0;
             top.at(c, r) = kNoHeight;
           }

@@ -382,12 +382,19 @@ ObjectsResult extract_objects(const Grid<Cell>& layout, const GridGeometry& geo,
                          ? *traits.dense
                          : cloud::floor_fill(voxels, layers.floor_layer) >= kDenseFloorFill;
   ColumnScan scan = scan_columns(layout, voxels, layers, params, mask, dense);
-  scan.surface_first = traits.moving;
-  if (traits.peel_strays && scan.surface_test)
+  // Without positions, on a scan whose count tells a stray (ScanTraits::peel_strays): the stray
+  // cells leave the mask, and a cell without data takes its top from the nearest surface away
+  // from the walls (the cabinet's front), not from the returns off the wall above it nor from a
+  // stray nearer it (furniture-extract.md, step 2).
+  const bool peel = traits.peel_strays && scan.surface_test;
+  scan.surface_first = traits.moving || peel;
+  if (peel) {
     for (std::size_t i = 0; i < mask.size(); ++i)
       if (mask.data[i] && scan.cols.data[i].top >= 0 &&
           scan.cols.data[i].points <= scan.stray_max_points)
         mask.data[i] = 0;  // left over
+    scan.off_walls = surfaces_off_walls(layout, scan, mask);
+  }
   const Grid<float> top = fill_tops(geo, voxels, scan, scanners_map, mask);
   PieceHeights heights{top, Grid<float>(w, h, kNoHeight), layers.floor_z_m, voxels.cell_m};
   for (std::size_t i = 0; i < mask.size(); ++i)

@@ -91,12 +91,23 @@ struct ColumnScan {
   // surface_cells): a dense scan whose surfaces leave several returns to a cell, as its floor
   // shows (surfaces_leave_several).
   bool surface_test = false;
-  bool surface_first = false;  // fill_tops: the nearest surface's top before a stray's (moving)
+  // fill_tops: the nearest surface's top before a stray's (along a path, and without positions),
+  // carried as the face's (face_top).
+  bool surface_first = false;
+  // fill_tops, with surface_first: the surfaces away from the walls (surfaces_off_walls), whose
+  // tops cells without data take before those of surfaces beside a wall. Empty: none preferred.
+  Grid<std::uint8_t> off_walls;
 };
 
 ColumnScan scan_columns(const Grid<Cell>& layout, const cloud::VoxelGrid& voxels,
                         const cloud::LayerAnalysis& layers, const ObjectParams& params,
                         Grid<std::uint8_t>& mask, bool dense);
+
+/// The surface cells of the mask with no wall cell within kWallFaceCells (ColumnScan::off_walls):
+/// returns off a wall land beside it (a moving scanner's beams graze the wall above a cabinet);
+/// a cabinet's or a shelf's front stands 0.3 m or more from the wall.
+Grid<std::uint8_t> surfaces_off_walls(const Grid<Cell>& layout, const ColumnScan& scan,
+                                      const Grid<std::uint8_t>& mask);
 
 /// The top of every mask cell (kNoHeight without data); pocket cells a scanner could see into
 /// leave the mask.

@@ -72,7 +72,9 @@ struct ScanTraits {
   /// a scan whose stray returns no ray evidence removed (no scanner positions, no ghost filter),
   /// their mixed pixels spread the objects beyond their faces. Off: every piece whole (the rooms of
   /// a floor need the inner walls' strips). Only where the count tells a stray
-  /// (ColumnScan::surface_test).
+  /// (ColumnScan::surface_test); there a cell without data also takes the top of the nearest
+  /// surface away from the walls before a stray's or a wall's returns' (furniture-extract.md, step
+  /// 2).
   bool peel_strays = false;
 };
 
