@@ -291,14 +291,25 @@ TEST(Objects, PairsOfStrayReturnsLeaveOnADenseScanOnly) {
   }
 }
 
-// A wall across the room at column `col` (rows 1 .. h - 2), seen up to 2.4 m, and the path a
-// moving scanner about 1 m up took along the room's left side (map frame).
-void wall_across(Grid<Cell>& layout, cloud::VoxelGrid& grid, int col) {
-  for (int r = 1; r < layout.height - 1; ++r) {
-    layout.at(col, r) = Cell::kWall;
-    fill_column(grid, col, r, 0.0, 2.4);
+// A room of w x 20 cells (5 cm) with a wall across it at column 25 (seen up to 2.4 m) and a block
+// of furniture cells without data against it (columns 12-24, rows 5-14): each test fills in what
+// the scanner saw of the piece. The path a moving scanner about 1 m up took along the room's left
+// side (map frame).
+struct AgainstTheWall {
+  static constexpr int h = 20;
+  explicit AgainstTheWall(int w)
+      : layout(walled_room(w, h)), grid(voxels(w, h, 50)), geo({0.0, 0.0}, 0.05, w, h) {
+    for (int r = 1; r < h - 1; ++r) {
+      layout.at(25, r) = Cell::kWall;
+      fill_column(grid, 25, r, 0.0, 2.4);
+    }
+    for (int r = 5; r <= 14; ++r)
+      for (int c = 12; c <= 24; ++c) layout.at(c, r) = Cell::kFurniture;
   }
-}
+  Grid<Cell> layout;
+  cloud::VoxelGrid grid;
+  GridGeometry geo;
+};
 const std::vector<Eigen::Vector3d> kLeftSidePath{{0.2, 0.3, 1.0}, {0.2, 0.5, 1.0}, {0.2, 0.7, 1.0}};
 
 // A moving scanner about 1 m up sees a cabinet (1.1 m) against a wall as its front face only:
@@ -309,20 +320,14 @@ const std::vector<Eigen::Vector3d> kLeftSidePath{{0.2, 0.3, 1.0}, {0.2, 0.5, 1.0
 // their own height). From fixed positions the nearest data decides as before, and the strays'
 // height cuts the body along the wall off the cabinet.
 TEST(Objects, AMovingScannersStraysOffTheWallDoNotCutTheCabinetsBody) {
-  constexpr int w = 30, h = 20;
-  Grid<Cell> layout = walled_room(w, h);
-  cloud::VoxelGrid grid = voxels(w, h, 50);
-  wall_across(layout, grid, 25);
+  AgainstTheWall t(30);
   for (int r = 5; r <= 14; ++r) {
-    for (int c = 12; c <= 24; ++c) layout.at(c, r) = Cell::kFurniture;
-    for (int c = 12; c <= 13; ++c) fill_column(grid, c, r, 0.0, 1.1);  // the front face
-    fill_column(grid, 24, r, 1.8, 1.85, 1);                            // a stray off the wall
+    for (int c = 12; c <= 13; ++c) fill_column(t.grid, c, r, 0.0, 1.1);  // the front face
+    fill_column(t.grid, 24, r, 1.8, 1.85, 1);                            // a stray off the wall
   }
-  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
-  const std::vector<Eigen::Vector3d>& path = kLeftSidePath;
   const auto cabinet = [&](bool moving) {
-    const auto res =
-        extract_objects(layout, geo, grid, flat_layers(), every_size(), path, {false, moving});
+    const auto res = extract_objects(t.layout, t.geo, t.grid, flat_layers(), every_size(),
+                                     kLeftSidePath, {false, moving});
     int best = 0;
     double z = 0.0;
     for (const auto& o : res.objects)
@@ -342,23 +347,17 @@ TEST(Objects, AMovingScannersStraysOffTheWallDoNotCutTheCabinetsBody) {
 // object and the cabinet another. From fixed positions the straight line decides as before, and
 // the body goes with the cabinet (the join across the wall's one cell).
 TEST(Objects, AShelfsUnseenBodyTakesItsOwnFacesTopNotTheOneAcrossTheWall) {
-  constexpr int w = 34, h = 20;
-  Grid<Cell> layout = walled_room(w, h);
-  cloud::VoxelGrid grid = voxels(w, h, 50);
-  wall_across(layout, grid, 25);
+  AgainstTheWall t(34);
   for (int r = 5; r <= 14; ++r) {
-    for (int c = 12; c <= 24; ++c) layout.at(c, r) = Cell::kFurniture;
-    for (int c = 12; c <= 13; ++c) fill_column(grid, c, r, 0.0, 1.8);  // the shelf's face
-    for (int c = 26; c <= 29; ++c) {                                   // the cabinet
-      layout.at(c, r) = Cell::kFurniture;
-      fill_column(grid, c, r, 0.0, 0.8);
+    for (int c = 12; c <= 13; ++c) fill_column(t.grid, c, r, 0.0, 1.8);  // the shelf's face
+    for (int c = 26; c <= 29; ++c) {                                     // the cabinet
+      t.layout.at(c, r) = Cell::kFurniture;
+      fill_column(t.grid, c, r, 0.0, 0.8);
     }
   }
-  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
-  const std::vector<Eigen::Vector3d>& path = kLeftSidePath;
   const auto cells_of = [&](bool moving) {
-    const auto res =
-        extract_objects(layout, geo, grid, flat_layers(), every_size(), path, {false, moving});
+    const auto res = extract_objects(t.layout, t.geo, t.grid, flat_layers(), every_size(),
+                                     kLeftSidePath, {false, moving});
     const auto object_at = [&](int c, int r) -> FurnitureObject {
       for (const auto& o : res.objects)
         if (o.id == res.labels.at(c, r)) return o;
@@ -379,17 +378,11 @@ TEST(Objects, AShelfsUnseenBodyTakesItsOwnFacesTopNotTheOneAcrossTheWall) {
 // The body's cells behind that row take the face's top (the median of the face cells around the
 // nearest one), not that cell's: the shelf is one object, not a strip cut off by the height rule.
 TEST(Objects, AShelfsBodyTakesItsFacesTopNotThatOfACellItCrossesAtACorner) {
-  constexpr int w = 30, h = 20;
-  Grid<Cell> layout = walled_room(w, h);
-  cloud::VoxelGrid grid = voxels(w, h, 50);
-  wall_across(layout, grid, 25);
-  for (int r = 5; r <= 14; ++r) {
-    for (int c = 12; c <= 24; ++c) layout.at(c, r) = Cell::kFurniture;
-    for (int c = 12; c <= 13; ++c) fill_column(grid, c, r, 0.0, r == 9 ? 1.3 : 1.8);
-  }
-  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
-  const auto res =
-      extract_objects(layout, geo, grid, flat_layers(), every_size(), kLeftSidePath, {false, true});
+  AgainstTheWall t(30);
+  for (int r = 5; r <= 14; ++r)
+    for (int c = 12; c <= 13; ++c) fill_column(t.grid, c, r, 0.0, r == 9 ? 1.3 : 1.8);
+  const auto res = extract_objects(t.layout, t.geo, t.grid, flat_layers(), every_size(),
+                                   kLeftSidePath, {false, true});
   const int body = res.labels.at(20, 9);
   ASSERT_NE(body, 0);
   EXPECT_EQ(res.labels.at(20, 5), body);
@@ -407,22 +400,17 @@ TEST(Objects, AShelfsBodyTakesItsFacesTopNotThatOfACellItCrossesAtACorner) {
 // surface away from the wall (the front), not the nearer strip's: one object, 1.1 m high, and the
 // strip keeps its own height.
 TEST(Objects, WithoutPositionsAHiddenBodyTakesTheTopOfASurfaceAwayFromTheWall) {
-  constexpr int w = 30, h = 20;
-  Grid<Cell> layout = walled_room(w, h);
-  cloud::VoxelGrid grid = voxels(w, h, 50);
-  wall_across(layout, grid, 25);
+  AgainstTheWall t(30);
   for (int r = 5; r <= 14; ++r) {
-    for (int c = 12; c <= 24; ++c) layout.at(c, r) = Cell::kFurniture;
-    for (int c = 12; c <= 13; ++c) fill_column(grid, c, r, 0.0, 1.1, 6);  // the front face
-    fill_column(grid, 24, r, 1.8, 1.85, 3);                               // returns off the wall
+    for (int c = 12; c <= 13; ++c) fill_column(t.grid, c, r, 0.0, 1.1, 6);  // the front face
+    fill_column(t.grid, 24, r, 1.8, 1.85, 3);                               // returns off the wall
   }
-  for (int r = 0; r < h; ++r)
-    for (int c = 0; c < w; ++c)
-      if (layout.at(c, r) == Cell::kFree) fill_column(grid, c, r, 0.0, 0.05, 6);  // the floor
-  const GridGeometry geo({0.0, 0.0}, 0.05, w, h);
+  for (int r = 0; r < t.h; ++r)
+    for (int c = 0; c < t.layout.width; ++c)
+      if (t.layout.at(c, r) == Cell::kFree) fill_column(t.grid, c, r, 0.0, 0.05, 6);  // the floor
   const auto cabinet = [&](bool peel) {
-    const auto res =
-        extract_objects(layout, geo, grid, flat_layers(), every_size(), {}, {true, false, peel});
+    const auto res = extract_objects(t.layout, t.geo, t.grid, flat_layers(), every_size(), {},
+                                     {true, false, peel});
     const int id = res.labels.at(13, 9);
     for (const auto& o : res.objects)
       if (o.id == id) return std::pair{o.cells, o.z_max_m};
