@@ -3,6 +3,7 @@
 # module links that module and what it needs, never the whole library):
 #   indoormap/<module>/...   im_<module> (with that module's own dependencies)
 #   an apps/common header    the app library it belongs to (im_app_common, im_app_base)
+#   an apps/pcd-to-map header  im_pcd_to_map (pcd-to-map's storey steps)
 #   opencv2/...              opencv_core opencv_imgproc opencv_imgcodecs
 #   nlohmann/...             nlohmann_json::nlohmann_json
 #   pcl/...                  PCL::lite (a PCL reference in a benchmark)
@@ -22,6 +23,8 @@ function(indoormap_include_links src out)
       list(APPEND links im_app_common)
     elseif(line MATCHES "\"(config_reader|main_guard|map_yaml|output_set|provenance|report)\\.hpp\"")
       list(APPEND links im_app_base)
+    elseif(line MATCHES "\"(storey_work|rooms_outputs|border_outputs|route_outputs)\\.hpp\"")
+      list(APPEND links im_pcd_to_map)
     elseif(line MATCHES "opencv2/")
       list(APPEND links opencv_core opencv_imgproc opencv_imgcodecs)
     elseif(line MATCHES "nlohmann/")

@@ -143,7 +143,7 @@ namespace {
 // shelf's face north of y = 2; no noise, no tilt, no mixed pixels. The scanner sees the shelf's
 // face south of that and its south end, never its north end nor its top.
 layout::MapResult room_with_a_tall_shelf(double hidden_body_max_depth_m,
-                                         double sparse_floor_fill = 0.6) {
+                                         double sparse_floor_fill = 0.6, bool positions = true) {
   sim::Scene s;
   sim::Room room;
   room.name = "room";
@@ -171,7 +171,9 @@ layout::MapResult room_with_a_tall_shelf(double hidden_body_max_depth_m,
   layout::MapParams p;
   p.layout.hidden_body_max_depth_m = hidden_body_max_depth_m;
   p.layout.sparse_floor_fill = sparse_floor_fill;
-  return layout::make_map(PointCloud{r.points, r.scanner_positions_m, {}}, p);
+  return layout::make_map(
+      PointCloud{r.points, positions ? r.scanner_positions_m : std::vector<Eigen::Vector3d>{}, {}},
+      p);
 }
 
 Cell cell_at(const layout::MapResult& m, double x, double y) {
@@ -211,6 +213,27 @@ TEST(Layout, TheUnseenBodyOfATallShelfAgainstAWallIsFurniture) {
   EXPECT_LT(strict.floor_fill, 0.99);
   EXPECT_FALSE(strict.dense_scan);
   EXPECT_TRUE(strict.free_from_evidence);
+}
+
+// Without the scanner's position the layout cannot tell which tops were seen: every furniture
+// cell counts as one whose top no scanner saw, and the shelf's body is furniture as above. The
+// cabinet standing free keeps its shadow floodable.
+TEST(Layout, WithoutPositionsTheUnseenBodyOfAShelfAgainstAWallIsFurnitureToo) {
+  const layout::MapResult on = room_with_a_tall_shelf(0.7, 0.6, false);
+  const layout::MapResult off = room_with_a_tall_shelf(0.0, 0.6, false);
+  ASSERT_EQ(on.geometry, off.geometry);
+  ASSERT_TRUE(on.dense_scan);
+  int body_on = 0, body_off = 0, cells = 0;
+  for (double y = 1.4; y <= 1.85; y += 0.05)
+    for (double x = 3.65; x <= 3.9; x += 0.05) {
+      ++cells;
+      body_on += cell_at(on, x, y) == Cell::kFurniture;
+      body_off += cell_at(off, x, y) == Cell::kFurniture;
+    }
+  EXPECT_EQ(body_on, cells);
+  EXPECT_LT(body_off, cells / 2);
+  for (const auto& [x, y] : {std::pair{3.1, 2.3}, std::pair{3.3, 2.6}})
+    EXPECT_NE(cell_at(on, x, y), Cell::kFurniture);
 }
 
 // The veils of mixed pixels a door jamb throws into a doorway: columns of a few points at

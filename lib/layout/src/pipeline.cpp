@@ -97,10 +97,12 @@ void drop_implausible_viewpoint(PointCloud& cloud, const ViewpointCheckParams& p
 }
 
 // Furniture with points above the lowest scanner position less 0.1 m: no scanner saw its top
-// (LayoutParams::hidden_body_max_depth_m). Empty without scanner positions.
+// (LayoutParams::hidden_body_max_depth_m). Without scanner positions, all furniture: the scan
+// cannot tell which tops were seen (a mobile scanner, its path not given, sees a cabinet taller
+// than itself as a ring of faces whose unseen end lets the flood into its body).
 Grid<std::uint8_t> tall_furniture(const MapResult& r, const std::vector<Eigen::Vector3d>& scanners,
                                   const cloud::LayerParams& lp) {
-  if (scanners.empty()) return {};
+  if (scanners.empty()) return r.furniture;
   double eye = scanners.front().z();
   for (const auto& s : scanners) eye = std::min(eye, s.z());
   cloud::HeightBand band = r.layers.furniture_band;

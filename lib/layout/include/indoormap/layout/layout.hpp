@@ -71,8 +71,9 @@ struct LayoutParams {
   /// called its body free): from each furniture cell with points above the lowest scanner
   /// position less 0.1 m whose nearest wall lies within this depth, the cells on the straight
   /// line to that wall are not flooded when the scan saw the floor of none of them; they become
-  /// a pocket of that furniture. The deepest simulated cabinet is 0.6 m. Needs scanner
-  /// positions and free_needs_evidence. 0: off.
+  /// a pocket of that furniture. The deepest simulated cabinet is 0.6 m. Without scanner
+  /// positions every furniture cell counts (no height tells which tops were seen). Needs
+  /// free_needs_evidence. 0: off.
   double hidden_body_max_depth_m = 0.7;
 };
 
