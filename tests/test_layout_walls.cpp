@@ -3,6 +3,7 @@
 // positions, the unseen body of a shelf taller than the scanner.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <string>
 #include <vector>
 
@@ -137,22 +138,32 @@ TEST(Layout, WithoutPositionsEveryRoomWithSeenFloorIsFlooded) {
 
 namespace {
 
+// p turned by yaw_deg about the origin (counter-clockwise).
+Eigen::Vector2d turned(const Eigen::Vector2d& p, double yaw_deg) {
+  return Eigen::Rotation2Dd(yaw_deg * M_PI / 180.0) * p;
+}
+
 // A 4 m x 3 m room (walls 0.2 m, ceiling 2.5 m) scanned from (1.0, 1.0, 1.2) at 0.5 degrees,
 // with a shelf 1.8 m tall, 0.4 m deep and 1.2 m long against the east wall (x 3.58 - 3.98,
 // y 1.3 - 2.5) and a cabinet 1.8 m tall standing free 1 m from the walls, whose shadow hides the
 // shelf's face north of y = 2; no noise, no tilt, no mixed pixels. The scanner sees the shelf's
-// face south of that and its south end, never its north end nor its top.
+// face south of that and its south end, never its north end nor its top. yaw_deg turns the
+// whole scene about the origin; without `positions` the cloud carries none.
 layout::MapResult room_with_a_tall_shelf(double hidden_body_max_depth_m,
-                                         double sparse_floor_fill = 0.6, bool positions = true) {
+                                         double sparse_floor_fill = 0.6, bool positions = true,
+                                         double yaw_deg = 0.0) {
   sim::Scene s;
   sim::Room room;
   room.name = "room";
-  room.polygon = {{0, 0}, {4, 0}, {4, 3}, {0, 3}};
+  for (const Eigen::Vector2d& corner :
+       {Eigen::Vector2d(0, 0), Eigen::Vector2d(4, 0), Eigen::Vector2d(4, 3), Eigen::Vector2d(0, 3)})
+    room.polygon.push_back(turned(corner, yaw_deg));
   room.wall_thickness_m = 0.2;
   room.ceiling.height_m = 2.5;
   s.rooms.push_back(room);
   sim::ScannerPose pose;
-  pose.position_m = {1.0, 1.0, 1.2};
+  const Eigen::Vector2d eye = turned({1.0, 1.0}, yaw_deg);
+  pose.position_m = {eye.x(), eye.y(), 1.2};
   s.scanners.push_back(pose);
   s.scanner.range_sigma_m = 0;
   s.scanner.mixed_pixel_probability = 0;
@@ -162,8 +173,9 @@ layout::MapResult room_with_a_tall_shelf(double hidden_body_max_depth_m,
                                 std::pair{Eigen::Vector2d(2.6, 1.95), Eigen::Vector2d(0.3, 0.3)}}) {
     sim::Furniture f;
     f.type = sim::FurnitureType::kShelf;
-    f.center_m = c;
+    f.center_m = turned(c, yaw_deg);
     f.size_m = size;
+    f.yaw_deg = yaw_deg;
     f.height_m = 1.8;
     s.furniture.push_back(f);
   }
@@ -234,6 +246,23 @@ TEST(Layout, WithoutPositionsTheUnseenBodyOfAShelfAgainstAWallIsFurnitureToo) {
   EXPECT_LT(body_off, cells / 2);
   for (const auto& [x, y] : {std::pair{3.1, 2.3}, std::pair{3.3, 2.6}})
     EXPECT_NE(cell_at(on, x, y), Cell::kFurniture);
+}
+
+// The same room turned by 30 degrees, without positions: the lines from the shelf's face cells
+// to their nearest wall cells are staircases that diverge, and the flood ran in between them.
+// Each line counts three cells wide: no cell of the body is free.
+TEST(Layout, TheUnseenBodyOfATurnedShelfLeavesNoGapsBetweenItsLines) {
+  const layout::MapResult m = room_with_a_tall_shelf(0.7, 0.6, false, 30.0);
+  ASSERT_TRUE(m.dense_scan);
+  int free = 0, furniture = 0;
+  for (double y = 1.4; y <= 1.85; y += 0.05)
+    for (double x = 3.65; x <= 3.85; x += 0.05) {
+      const Cell v = m.layout.layout.at(m.geometry.cell_of(turned({x, y}, 30.0)));
+      free += v == Cell::kFree;
+      furniture += v == Cell::kFurniture;
+    }
+  EXPECT_EQ(free, 0);
+  EXPECT_GE(furniture, 40);  // of 45
 }
 
 // The veils of mixed pixels a door jamb throws into a doorway: columns of a few points at

@@ -35,6 +35,7 @@ Grid<std::uint8_t> hidden_bodies(const Grid<std::uint8_t>& seen, const Grid<std:
   // From each tall cell with a wall within max_depth_m, straight to that wall: the cells between
   // are the body when the scan saw the floor of none of them (a seen floor: a gap, no body).
   const double reach = max_depth_m / cell_m + 0.5;
+  cv::Mat body(h, w, CV_8U, cv::Scalar(0));
   std::vector<CellIndex> run;
   for (int r = 0; r < h; ++r)
     for (int c = 0; c < w; ++c) {
@@ -50,9 +51,17 @@ Grid<std::uint8_t> hidden_bodies(const Grid<std::uint8_t>& seen, const Grid<std:
         gap = seen.at(cc, rr) != 0;
         if (!tall.at(cc, rr)) run.push_back({cc, rr});
       }
-      if (!gap)
-        for (const auto& q : run) out.at(q) = 1;
+      if (gap || run.empty()) continue;
+      for (const auto& q : run) out.at(q) = 1;
+      cv::line(body, {c, r}, {run.back().col, run.back().row}, cv::Scalar(1), 3, cv::LINE_8);
     }
+  // Lines from neighbouring face cells to their nearest wall cells diverge and leave unmarked
+  // cells between them, through which the flood ran into the body: each line counts three
+  // cells wide, over cells the scan did not see.
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c)
+      if (body.at<std::uint8_t>(r, c) && !seen.at(c, r) && !tall.at(c, r) && !walls.at(c, r))
+        out.at(c, r) = 1;
   return out;
 }
 

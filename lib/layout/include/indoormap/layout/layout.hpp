@@ -70,9 +70,9 @@ struct LayoutParams {
   /// sees a tall shelf as its front face, and the paper's flood ran in round its unseen end and
   /// called its body free): from each furniture cell with points above the lowest scanner
   /// position less 0.1 m whose nearest wall lies within this depth, the cells on the straight
-  /// line to that wall are not flooded when the scan saw the floor of none of them; they become
-  /// a pocket of that furniture. The deepest simulated cabinet is 0.6 m. Without scanner
-  /// positions every furniture cell counts (no height tells which tops were seen). Needs
+  /// line to that wall (three cells wide) are not flooded when the scan saw the floor of none of
+  /// them; they become a pocket of that furniture. The deepest simulated cabinet is 0.6 m. Without
+  /// scanner positions every furniture cell counts (no height tells which tops were seen). Needs
   /// free_needs_evidence. 0: off.
   double hidden_body_max_depth_m = 0.7;
 };
